@@ -1,0 +1,142 @@
+#include "app/Application.hpp"
+
+#include <Tpetra_Core.hpp>
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "app/Simulation.hpp"
+#include "core/Error.hpp"
+#include "damage/DamageModel.hpp"
+#include "deck/Deck.hpp"
+#include "deck/RunConfig.hpp"
+#include "materials/MaterialModel.hpp"
+#include "peridot/Version.hpp"
+
+namespace peridot {
+
+namespace {
+
+const char* kUsage =
+    "Usage: peridot [options] DECK\n"
+    "\n"
+    "Runs the peridynamics simulation described by DECK, a Peridigm-style parameter list in\n"
+    "XML (.xml) or YAML (.yaml, .yml). Run it under MPI for parallel runs:\n"
+    "  mpirun -np 4 peridot deck.xml\n"
+    "The mesh is read whole on every rank (no pre-split files) and the output is one Exodus\n"
+    "file whatever the number of ranks.\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help            print this help and exit\n"
+    "  -v, --version         print the version and exit\n"
+    "  --list-models         list the material and damage models\n"
+    "  --help-model NAME     describe a material or damage model and its parameters\n"
+    "  --check               validate the deck and the mesh, then exit without running\n"
+    "\n"
+    "The deck vocabulary is documented in doc/deck-reference.md.\n";
+
+template <class R>
+bool describe(const std::string& name, const char* kind) {
+  const auto* entry = R::find(name);
+  if (!entry) return false;
+  std::cout << kind << " \"" << name << "\": " << entry->summary << "\nParameters:\n";
+  for (const auto& p : entry->parameters) std::cout << "  " << p.name << ": " << p.description << "\n";
+  return true;
+}
+
+int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
+  auto deck = loadDeck(deckFile);
+  RunConfig config = readRunConfig(*deck);
+  if (rank == 0) std::cout << "Peridot " << PERIDOT_VERSION << ": " << deckFile << std::endl;
+  Simulation simulation(std::move(config), MPI_COMM_WORLD, std::cout);
+  if (checkOnly) {
+    if (rank == 0) std::cout << "The deck and its mesh are valid." << std::endl;
+    return 0;
+  }
+  simulation.run();
+  simulation.timers().report(std::cout, MPI_COMM_WORLD);
+  if (rank == 0) std::cout << "Done." << std::endl;
+  return 0;
+}
+
+}  // namespace
+
+int runApplication(int argc, char** argv) {
+  std::string deckFile;
+  bool checkOnly = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (arg == "-v" || arg == "--version") {
+      std::cout << "peridot " << PERIDOT_VERSION << std::endl;
+      return 0;
+    }
+    if (arg == "--list-models") {
+      std::cout << "Material models:\n";
+      for (const auto& n : MaterialRegistry::names()) std::cout << "  " << n << "\n";
+      std::cout << "Damage models:\n";
+      for (const auto& n : DamageRegistry::names()) std::cout << "  " << n << "\n";
+      return 0;
+    }
+    if (arg == "--help-model") {
+      if (k + 1 >= argc) {
+        std::cerr << "peridot: error: --help-model needs a model name\n";
+        return 2;
+      }
+      const std::string name = argv[++k];
+      if (describe<MaterialRegistry>(name, "Material model") ||
+          describe<DamageRegistry>(name, "Damage model"))
+        return 0;
+      std::cerr << "peridot: error: no model named \"" << name << "\" (see --list-models)\n";
+      return 2;
+    }
+    if (arg == "--check") {
+      checkOnly = true;
+      continue;
+    }
+    if (!arg.empty() && arg[0] == '-') {
+      std::cerr << "peridot: error: unknown option \"" << arg << "\"\n" << kUsage;
+      return 2;
+    }
+    if (!deckFile.empty()) {
+      std::cerr << "peridot: error: more than one deck given\n" << kUsage;
+      return 2;
+    }
+    deckFile = arg;
+  }
+  if (deckFile.empty()) {
+    std::cerr << "peridot: error: no deck given\n" << kUsage;
+    return 2;
+  }
+
+  Tpetra::ScopeGuard mpi(&argc, &argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  int status = 0;
+  try {
+    status = runDeck(deckFile, checkOnly, rank);
+  } catch (const InputError& e) {
+    // Every rank reads the same deck and mesh, so every rank fails here alike.
+    if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
+    status = 1;
+  } catch (const RunError& e) {
+    std::cerr << "peridot: error: " << e.what() << std::endl;
+    status = 3;
+  } catch (const std::exception& e) {
+    std::cerr << "peridot: internal error: " << e.what() << std::endl;
+    status = 4;
+  }
+  std::cout.flush();
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  // Other ranks may be waiting in a collective call: only an abort releases them.
+  if (status != 0 && size > 1) MPI_Abort(MPI_COMM_WORLD, status);
+  return status;
+}
+
+}  // namespace peridot

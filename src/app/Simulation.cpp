@@ -1,0 +1,426 @@
+#include "app/Simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "bc/NodeSets.hpp"
+#include "core/Error.hpp"
+#include "deck/Expression.hpp"
+#include "solvers/StableTimeStep.hpp"
+
+namespace peridot {
+
+namespace {
+
+std::string formatSeconds(double s) {
+  std::ostringstream out;
+  if (s < 60) {
+    out << std::fixed << std::setprecision(1) << s << " s";
+  } else if (s < 3600) {
+    out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
+  } else {
+    out << static_cast<int>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60) << " min";
+  }
+  return out.str();
+}
+
+}  // namespace
+
+Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
+    : config_(std::move(config)), comm_(comm), log_(log) {
+  Timers::Scope setup(timers_, "Setup");
+  MPI_Comm_rank(comm_, &rank_);
+  {
+    Timers::Scope t(timers_, "Setup: read mesh");
+    cloud_ = buildPointCloud(config_.discretization);
+  }
+  // Blocks of the mesh -> block groups of the deck, and each point's horizon.
+  std::map<int, int> groupOfBlock;  // mesh block id -> index in config_.blocks
+  std::map<std::string, int> blockIdOfName;
+  for (const auto& kv : cloud_.blockNames) blockIdOfName[kv.second] = kv.first;
+  int defaultGroup = -1;
+  for (std::size_t g = 0; g < config_.blocks.size(); ++g) {
+    for (const auto& name : config_.blocks[g].blockNames) {
+      if (name == "Default") {
+        defaultGroup = static_cast<int>(g);
+        continue;
+      }
+      auto it = blockIdOfName.find(name);
+      if (it == blockIdOfName.end()) {
+        std::string known;
+        for (const auto& kv : blockIdOfName) known += (known.empty() ? "" : ", ") + kv.first;
+        throw InputError(config_.blocks[g].path + " -> Block Names",
+                         "unknown block \"" + name + "\"; the discretization has " + known);
+      }
+      if (groupOfBlock.count(it->second)) {
+        throw InputError(config_.blocks[g].path + " -> Block Names",
+                         "block \"" + name + "\" is already assigned by another block group");
+      }
+      groupOfBlock[it->second] = static_cast<int>(g);
+    }
+  }
+  for (const auto& kv : cloud_.blockNames) {
+    if (groupOfBlock.count(kv.first)) continue;
+    if (defaultGroup < 0) {
+      throw InputError("Blocks", "block \"" + kv.second +
+                                     "\" of the discretization has no block group (name it in "
+                                     "a group's Block Names, or use Default)");
+    }
+    groupOfBlock[kv.first] = defaultGroup;
+  }
+  std::vector<std::unique_ptr<Expression>> horizonOf(config_.blocks.size());
+  for (std::size_t g = 0; g < config_.blocks.size(); ++g)
+    horizonOf[g] = std::make_unique<Expression>(config_.blocks[g].horizon,
+                                                std::vector<std::string>{"x", "y", "z"},
+                                                config_.blocks[g].path + " -> Horizon");
+  cloudHorizon_.resize(cloud_.size());
+  for (std::size_t p = 0; p < cloud_.size(); ++p) {
+    const int g = groupOfBlock.at(cloud_.blockId[p]);
+    cloudHorizon_[p] = horizonOf[g]->evaluate(&cloud_.x[3 * p]);
+    if (!(cloudHorizon_[p] > 0) || !std::isfinite(cloudHorizon_[p])) {
+      throw InputError(config_.blocks[g].path + " -> Horizon",
+                       "the horizon must be positive, got " + std::to_string(cloudHorizon_[p]) +
+                           " at point " + std::to_string(cloud_.globalId[p] + 1));
+    }
+  }
+  nodeSetIds_ = collectNodeSets(cloud_, config_.nodeSets);
+
+  {
+    Timers::Scope t(timers_, "Setup: partition + search");
+    TopologyOptions options;
+    options.rule = neighborhoodRule(config_.discretization);
+    options.bondFilters = &config_.discretization.bondFilters;
+    options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
+    topology_ = buildTopology(cloud_, cloudHorizon_, options, comm_);
+  }
+  if (topology_.globalNumBonds == 0) {
+    double h = *std::min_element(cloudHorizon_.begin(), cloudHorizon_.end());
+    throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
+                                   std::to_string(h) + ") is smaller than the point spacing");
+  }
+  {
+    std::vector<long long> lonely;
+    for (int i = 0; i < topology_.numOwned; ++i)
+      if (topology_.numNeighbors(i) == 0) lonely.push_back(topology_.overlapGlobalId[i] + 1);
+    long long count = static_cast<long long>(lonely.size()), total = 0;
+    MPI_Allreduce(&count, &total, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+    if (total > 0) {
+      std::ostringstream msg;
+      msg << "peridot: warning: " << lonely.size() << " point(s) on rank " << rank_
+          << " have no neighbour (they move freely); ids:";
+      for (std::size_t k = 0; k < lonely.size() && k < 10; ++k) msg << " " << lonely[k];
+      if (lonely.size() > 10) msg << " ...";
+      if (!lonely.empty()) std::cerr << msg.str() << std::endl;
+    }
+  }
+
+  fields_ = std::make_unique<FieldManager>(topology_);
+  x_ = fields_->node("Model_Coordinates", 3);
+  y_ = fields_->node("Coordinates", 3);
+  volume_ = fields_->node("Volume", 1);
+  double* horizon = fields_->node("Horizon", 1);
+  for (int k = 0; k < topology_.numOverlap; ++k) {
+    const std::size_t p = topology_.overlapCloudIndex[k];
+    for (int d = 0; d < 3; ++d) x_[3 * k + d] = y_[3 * k + d] = cloud_.x[3 * p + d];
+    volume_[k] = cloud_.volume[p];
+    horizon[k] = cloudHorizon_[p];
+  }
+  u_ = fields_->node("Displacement", 3);
+  v_ = fields_->node("Velocity", 3);
+  a_ = fields_->node("Acceleration", 3);
+
+  // Blocks with their owned points.
+  for (const auto& kv : cloud_.blockNames) {
+    const auto& group = config_.blocks[groupOfBlock.at(kv.first)];
+    Block b;
+    b.name = kv.second;
+    b.id = kv.first;
+    b.materialName = group.material;
+    b.damageName = group.damageModel;
+    b.material = config_.materials.at(group.material);
+    if (!group.damageModel.empty()) b.damage = config_.damageModels.at(group.damageModel);
+    blocks_.push_back(b);
+  }
+  blockIndexOfPoint_.resize(topology_.numOwned);
+  density_.resize(topology_.numOwned);
+  bulkModulus_.resize(topology_.numOwned);
+  for (int i = 0; i < topology_.numOwned; ++i) {
+    const int id = cloud_.blockId[topology_.overlapCloudIndex[i]];
+    const int index = static_cast<int>(
+        std::find_if(blocks_.begin(), blocks_.end(), [&](const Block& b) { return b.id == id; }) -
+        blocks_.begin());
+    blockIndexOfPoint_[i] = index;
+    blocks_[index].points.push_back(i);
+    density_[i] = blocks_[index].material->density();
+    bulkModulus_[i] = blocks_[index].material->bulkModulus();
+  }
+
+  evaluator_ = std::make_unique<ModelEvaluator>(topology_, *fields_, blocks_,
+                                                config_.discretization.influenceFunction, timers_);
+  evaluator_->initialize();
+  f_ = fields_->node("Force_Density", 3);
+
+  std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
+                                  topology_.overlapGlobalId.begin() + topology_.numOwned);
+  for (const auto& kv : nodeSetIds_) nodeSets_[kv.first] = ownedPoints(kv.second, ownedIds);
+  for (const auto& kv : nodeSetIds_) {
+    if (kv.second.empty()) {
+      for (const auto& c : config_.conditions)
+        if (c.nodeSet == kv.first) throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
+    }
+  }
+  conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_);
+  if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
+
+  checkVariables();
+
+  stableDt_ = stableTimeStep(topology_, x_, volume_, horizon, density_.data(), bulkModulus_.data());
+  const auto& s = config_.solver;
+  dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
+  // A tiny relative allowance keeps round-off in (final - initial) / dt from dropping a step.
+  const double ratio = (s.finalTime - s.initialTime) / dt_;
+  numSteps_ = static_cast<long long>(std::floor(ratio * (1.0 + 1e-14)));
+  if (numSteps_ < 1) {
+    throw InputError(s.path + " -> Final Time",
+                     "the run is shorter than one time step (dt = " + std::to_string(dt_) + ")");
+  }
+  outputs_ = std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::checkVariables() {
+  bool lps = false;
+  for (const auto& b : blocks_) lps = lps || b.material->family() == "LPS";
+  auto check = [&](const std::string& v, const std::string& path) {
+    if ((v == "Dilatation" || v == "Weighted_Volume") && !lps) {
+      throw InputError(path, "\"" + v + "\" needs a state-based material (e.g. \"Elastic\")");
+    }
+  };
+  for (const auto& out : config_.outputs)
+    for (const auto& v : out.variables) check(v, out.path + " -> Output Variables -> " + v);
+  for (const auto& c : config_.computes) {
+    check(c.variable, c.path + " -> Variable");
+    if (c.computeClass == "Block_Data") {
+      bool found = false;
+      for (const auto& b : blocks_) found = found || b.name == c.region;
+      if (!found) throw InputError(c.path + " -> Block", "unknown block \"" + c.region + "\"");
+    } else if (!nodeSetIds_.count(c.region)) {
+      throw InputError(c.path + " -> Node Set", "unknown node set \"" + c.region + "\"");
+    }
+  }
+}
+
+int Simulation::components(const std::string& name) const {
+  if (const VariableInfo* v = findOutputVariable(name)) return v->components;
+  return 0;  // a compute's label: global
+}
+
+int Simulation::globalSize(const std::string& name) const {
+  for (const auto& c : config_.computes)
+    if (c.label == name) return components(c.variable) == 3 ? 3 : 1;
+  return 1;
+}
+
+void Simulation::nodeVariable(const std::string& name, std::vector<double>& out) {
+  const int n = topology_.numOwned;
+  const int c = components(name);
+  out.assign(static_cast<std::size_t>(n) * c, 0.0);
+  auto copy = [&](const double* src) { std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin()); };
+  if (name == "Volume") {
+    copy(volume_);
+  } else if (name == "Horizon") {
+    copy(fields_->node("Horizon", 1));
+  } else if (name == "Block_Id") {
+    for (int i = 0; i < n; ++i) out[i] = blocks_[blockIndexOfPoint_[i]].id;
+  } else if (name == "Element_Id") {
+    for (int i = 0; i < n; ++i) out[i] = static_cast<double>(topology_.overlapGlobalId[i] + 1);
+  } else if (name == "Proc_Num") {
+    for (int i = 0; i < n; ++i) out[i] = rank_;
+  } else if (name == "Number_Of_Neighbors") {
+    for (int i = 0; i < n; ++i) out[i] = topology_.numNeighbors(i);
+  } else if (name == "Model_Coordinates") {
+    copy(x_);
+  } else if (name == "Coordinates") {
+    copy(y_);
+  } else if (name == "Displacement") {
+    copy(u_);
+  } else if (name == "Velocity") {
+    copy(v_);
+  } else if (name == "Acceleration") {
+    copy(a_);
+  } else if (name == "Force_Density") {
+    copy(f_);
+  } else if (name == "Force") {
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) out[3 * i + d] = f_[3 * i + d] * volume_[i];
+  } else if (name == "External_Force_Density") {
+    if (b_) copy(b_);
+  } else if (name == "Damage") {
+    evaluator_->nodeDamage(out.data());
+  } else if (name == "Dilatation" || name == "Weighted_Volume") {
+    copy(fields_->node(name, 1));
+  } else if (name == "Kinetic_Energy") {
+    for (int i = 0; i < n; ++i) {
+      const double v2 = v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
+      out[i] = 0.5 * density_[i] * volume_[i] * v2;
+    }
+  } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density") {
+    std::vector<double> w(topology_.numOverlap, 0.0);
+    evaluator_->storedEnergyDensity(w.data());
+    const bool perVolume = name == "Stored_Elastic_Energy_Density";
+    for (int i = 0; i < n; ++i) out[i] = perVolume ? w[i] : w[i] * volume_[i];
+  } else {
+    throw std::logic_error("no node variable " + name);
+  }
+}
+
+double Simulation::sumOver(const std::vector<int>* points, const std::string& variable,
+                           int component, const std::string& calculation) {
+  std::vector<double> values;
+  nodeVariable(variable, values);
+  const int c = components(variable);
+  double result = calculation == "Sum" ? 0.0
+                  : calculation == "Minimum" ? std::numeric_limits<double>::max()
+                                             : std::numeric_limits<double>::lowest();
+  auto take = [&](int i) {
+    const double v = values[static_cast<std::size_t>(i) * c + component];
+    if (calculation == "Sum") {
+      result += v;
+    } else if (calculation == "Minimum") {
+      result = std::min(result, v);
+    } else {
+      result = std::max(result, v);
+    }
+  };
+  if (points) {
+    for (int i : *points) take(i);
+  } else {
+    for (int i = 0; i < topology_.numOwned; ++i) take(i);
+  }
+  double global = 0;
+  MPI_Op op = calculation == "Sum" ? MPI_SUM : calculation == "Minimum" ? MPI_MIN : MPI_MAX;
+  MPI_Allreduce(&result, &global, 1, MPI_DOUBLE, op, comm_);
+  return global;
+}
+
+void Simulation::globalVariable(const std::string& name, std::vector<double>& values) {
+  values.clear();
+  if (name == "Global_Kinetic_Energy") {
+    values.push_back(sumOver(nullptr, "Kinetic_Energy", 0, "Sum"));
+    return;
+  }
+  if (name == "Global_Stored_Elastic_Energy") {
+    values.push_back(sumOver(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
+    return;
+  }
+  for (const auto& c : config_.computes) {
+    if (c.label != name) continue;
+    const std::vector<int>* points = nullptr;
+    if (c.computeClass == "Block_Data") {
+      for (const auto& b : blocks_)
+        if (b.name == c.region) points = &b.points;
+    } else {
+      points = &nodeSets_.at(c.region);
+    }
+    const int n = components(c.variable);
+    for (int d = 0; d < n; ++d) values.push_back(sumOver(points, c.variable, d, c.calculation));
+    return;
+  }
+  throw std::logic_error("no global variable " + name);
+}
+
+void Simulation::computeAcceleration() {
+  for (int i = 0; i < topology_.numOwned; ++i) {
+    const double inv = 1.0 / density_[i];
+    for (int d = 0; d < 3; ++d)
+      a_[3 * i + d] = (f_[3 * i + d] + (b_ ? b_[3 * i + d] : 0.0)) * inv;
+  }
+}
+
+void Simulation::checkFinite(long long step, double time) {
+  int bad = -1;
+  for (int i = 0; i < topology_.numOwned && bad < 0; ++i)
+    for (int d = 0; d < 3; ++d)
+      if (!std::isfinite(f_[3 * i + d]) || !std::isfinite(u_[3 * i + d])) bad = i;
+  int anyBad = bad >= 0 ? 1 : 0, globalBad = 0;
+  MPI_Allreduce(&anyBad, &globalBad, 1, MPI_INT, MPI_MAX, comm_);
+  if (!globalBad) return;
+  std::ostringstream msg;
+  if (bad >= 0) {
+    msg << "non-finite " << (std::isfinite(u_[3 * bad] + u_[3 * bad + 1] + u_[3 * bad + 2]) ? "force" : "displacement")
+        << " at point " << topology_.overlapGlobalId[bad] + 1 << " (block "
+        << blocks_[blockIndexOfPoint_[bad]].name << ") at step " << step << ", time " << time
+        << "; the time step (" << dt_ << ") may exceed the stable estimate (" << stableDt_ << ")";
+  }
+  throw RunError(bad >= 0 ? msg.str() : "non-finite values on another rank");
+}
+
+void Simulation::run() {
+  const auto& s = config_.solver;
+  if (rank_ == 0) {
+    log_ << "Points: " << topology_.globalNumPoints << ", bonds (one-sided): " << topology_.globalNumBonds
+         << ", ranks: " << topology_.numRanks << "\n";
+    log_ << "Stable time step estimate: " << stableDt_ << "\n";
+    log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
+         << ", steps: " << numSteps_ << "\n";
+    if (s.fixedDtGiven && dt_ > stableDt_) {
+      log_ << "peridot: warning: Fixed dt exceeds the stable time step estimate\n";
+    }
+    for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
+    log_ << std::flush;
+  }
+  time_ = s.initialTime;
+  conditions_->applyInitial(time_, u_, v_);
+  for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
+  if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
+  evaluator_->evaluate(dt_);
+  checkFinite(0, time_);
+  computeAcceleration();
+  outputs_->write(0, time_);
+
+  const double half = 0.5 * dt_;
+  const int n3 = 3 * topology_.numOwned;
+  const auto start = std::chrono::steady_clock::now();
+  auto lastReport = start;
+  for (long long step = 1; step <= numSteps_; ++step) {
+    const double next = s.initialTime + step * dt_;
+    {
+      Timers::Scope t(timers_, "Integration");
+      for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
+      conditions_->applyPrescribedVelocity(next, dt_, v_);
+      if (b_) conditions_->applyBodyForce(next, b_, topology_.numOwned);
+      for (int k = 0; k < n3; ++k) {
+        u_[k] += dt_ * v_[k];
+        y_[k] = x_[k] + u_[k];
+      }
+    }
+    time_ = next;
+    evaluator_->evaluate(dt_);
+    checkFinite(step, time_);
+    {
+      Timers::Scope t(timers_, "Integration");
+      computeAcceleration();
+      for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
+    }
+    if (outputs_->due(step)) outputs_->write(step, time_);
+    if (rank_ == 0) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - lastReport).count() > 5.0 || (step == numSteps_ && std::chrono::duration<double>(now - start).count() > 5.0)) {
+        lastReport = now;
+        const double elapsed = std::chrono::duration<double>(now - start).count();
+        const double left = elapsed / step * (numSteps_ - step);
+        log_ << "  step " << step << "/" << numSteps_ << "  t = " << time_ << "  elapsed "
+             << formatSeconds(elapsed) << "  remaining ~" << formatSeconds(left) << std::endl;
+      }
+    }
+  }
+}
+
+}  // namespace peridot

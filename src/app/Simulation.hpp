@@ -1,0 +1,74 @@
+#pragma once
+// A run: builds the problem from a validated deck (discretization, blocks, decomposition,
+// neighbourhoods, fields, models, conditions, outputs) and integrates it in time.
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bc/Conditions.hpp"
+#include "core/Timers.hpp"
+#include "deck/RunConfig.hpp"
+#include "discretization/PointCloud.hpp"
+#include "evaluator/ModelEvaluator.hpp"
+#include "fields/FieldManager.hpp"
+#include "output/OutputManager.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+class Simulation : public VariableSource {
+ public:
+  // Collective. Throws InputError for anything wrong with the deck or its mesh.
+  Simulation(RunConfig config, MPI_Comm comm, std::ostream& log);
+  ~Simulation() override;
+
+  // Runs the Verlet solver to the final time, writing the outputs. Collective.
+  void run();
+
+  // VariableSource
+  void nodeVariable(const std::string& name, std::vector<double>& ownedValues) override;
+  void globalVariable(const std::string& name, std::vector<double>& values) override;
+  int components(const std::string& name) const override;
+  int globalSize(const std::string& name) const override;
+
+  const Topology& topology() const { return topology_; }
+  FieldManager& fields() { return *fields_; }
+  Timers& timers() { return timers_; }
+  double timeStep() const { return dt_; }
+  long long numSteps() const { return numSteps_; }
+  double stableTimeStepEstimate() const { return stableDt_; }
+
+ private:
+  void buildBlocks();
+  void checkVariables();
+  void computeAcceleration();
+  void checkFinite(long long step, double time);
+  double sumOver(const std::vector<int>* points, const std::string& variable, int component,
+                 const std::string& calculation);
+
+  RunConfig config_;
+  MPI_Comm comm_;
+  int rank_ = 0;
+  std::ostream& log_;
+  Timers timers_;
+  PointCloud cloud_;
+  std::vector<double> cloudHorizon_;
+  Topology topology_;
+  std::unique_ptr<FieldManager> fields_;
+  std::vector<Block> blocks_;
+  std::unique_ptr<ModelEvaluator> evaluator_;
+  std::map<std::string, std::vector<long long>> nodeSetIds_;
+  std::map<std::string, std::vector<int>> nodeSets_;  // owned local indices
+  std::unique_ptr<BoundaryConditions> conditions_;
+  std::unique_ptr<OutputManager> outputs_;
+  std::vector<double> density_, bulkModulus_;  // owned
+  std::vector<int> blockIndexOfPoint_;         // owned -> index in blocks_
+  double dt_ = 0, stableDt_ = 0, time_ = 0;
+  long long numSteps_ = 0;
+  double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr,
+         *f_ = nullptr, *b_ = nullptr, *volume_ = nullptr;
+};
+
+}  // namespace peridot

@@ -1,0 +1,82 @@
+#include "bc/Conditions.hpp"
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& conditions,
+                                       const std::map<std::string, std::vector<int>>& sets,
+                                       const double* x)
+    : x_(x) {
+  for (const auto& cc : conditions) {
+    auto it = sets.find(cc.nodeSet);
+    if (it == sets.end()) {
+      throw InputError(cc.path + " -> Node Set",
+                       "unknown node set \"" + cc.nodeSet +
+                           "\"; define it in Boundary Conditions or in the mesh");
+    }
+    Condition c;
+    c.config = cc;
+    c.value = std::make_unique<Expression>(cc.value, std::vector<std::string>{"x", "y", "z", "t"},
+                                           cc.path + " -> Value");
+    c.points = it->second;
+    if (cc.kind == ConditionConfig::Kind::BodyForce) hasBodyForce_ = true;
+    conditions_.push_back(std::move(c));
+  }
+}
+
+double BoundaryConditions::evaluate(Condition& c, int p, double t) {
+  ++evaluations_;
+  const double vars[4] = {x_[3 * p], x_[3 * p + 1], x_[3 * p + 2], t};
+  return c.value->evaluate(vars);
+}
+
+void BoundaryConditions::applyInitial(double t0, double* u, double* v) {
+  using Kind = ConditionConfig::Kind;
+  for (auto& c : conditions_) {
+    const int d = c.config.coordinate;
+    if (c.config.kind == Kind::InitialDisplacement || c.config.kind == Kind::PrescribedDisplacement) {
+      if (c.config.kind == Kind::PrescribedDisplacement) c.previous.resize(c.points.size());
+      for (std::size_t k = 0; k < c.points.size(); ++k) {
+        const double value = evaluate(c, c.points[k], t0);
+        u[3 * c.points[k] + d] = value;
+        if (c.config.kind == Kind::PrescribedDisplacement) c.previous[k] = value;
+      }
+    } else if (c.config.kind == Kind::InitialVelocity) {
+      for (int p : c.points) v[3 * p + d] = evaluate(c, p, t0);
+    }
+  }
+}
+
+void BoundaryConditions::applyPrescribedVelocity(double tNext, double dt, double* v) {
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::PrescribedDisplacement) continue;
+    const int d = c.config.coordinate;
+    if (!c.value->usesVariable("t")) {
+      // A time-independent prescribed displacement holds the component still.
+      for (int p : c.points) v[3 * p + d] = 0.0;
+      continue;
+    }
+    for (std::size_t k = 0; k < c.points.size(); ++k) {
+      const double next = evaluate(c, c.points[k], tNext);
+      v[3 * c.points[k] + d] = (next - c.previous[k]) / dt;
+      c.previous[k] = next;
+    }
+  }
+}
+
+void BoundaryConditions::applyBodyForce(double t, double* b, int numOwned) {
+  for (int k = 0; k < 3 * numOwned; ++k) b[k] = 0.0;
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::BodyForce) continue;
+    const int d = c.config.coordinate;
+    if (c.value->isConstant()) {
+      const double value = c.value->evaluate(nullptr);
+      for (int p : c.points) b[3 * p + d] += value;
+    } else {
+      for (int p : c.points) b[3 * p + d] += evaluate(c, p, t);
+    }
+  }
+}
+
+}  // namespace peridot

@@ -1,0 +1,105 @@
+#include "bc/NodeSets.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+namespace {
+
+bool allIntegers(const std::string& s) {
+  std::istringstream in(s);
+  std::string w;
+  bool any = false;
+  while (in >> w) {
+    any = true;
+    char* end = nullptr;
+    std::strtoll(w.c_str(), &end, 10);
+    if (*end != '\0') return false;
+  }
+  return any;
+}
+
+std::vector<long long> readIds(const std::string& text, const std::string& path,
+                               const std::string& source, long long numPoints) {
+  std::vector<long long> ids;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    if (line[first] == '#' || line[first] == '/' || line[first] == '*') continue;
+    std::istringstream words(line);
+    std::string w;
+    while (words >> w) {
+      char* end = nullptr;
+      const long long id = std::strtoll(w.c_str(), &end, 10);
+      if (*end != '\0') {
+        throw InputError(path, source + ": \"" + w + "\" is not a point id (a positive integer)");
+      }
+      if (id < 1 || id > numPoints) {
+        throw InputError(path, source + ": point id " + w + " is out of range (ids are 1-based, " +
+                                   "the discretization has " + std::to_string(numPoints) + " points)");
+      }
+      ids.push_back(id - 1);
+    }
+  }
+  return ids;
+}
+
+}  // namespace
+
+std::map<std::string, std::vector<long long>> collectNodeSets(const PointCloud& cloud,
+                                                              const std::vector<NodeSetSpec>& specs) {
+  std::map<std::string, std::vector<long long>> sets;
+  long long maxId = 0;
+  for (long long g : cloud.globalId) maxId = std::max(maxId, g + 1);
+  for (const auto& ps : cloud.pointSets) sets[ps.name] = ps.globalIds;
+  for (const auto& spec : specs) {
+    if (sets.count(spec.name)) {
+      throw InputError(spec.path, "a node set named \"" + spec.name + "\" already exists in the mesh");
+    }
+    std::vector<long long> ids;
+    if (allIntegers(spec.value)) {
+      ids = readIds(spec.value, spec.path, "node set", maxId);
+    } else {
+      std::string fileName = spec.value;
+      fileName.erase(0, fileName.find_first_not_of(" \t"));
+      fileName.erase(fileName.find_last_not_of(" \t") + 1);
+      std::ifstream in(fileName);
+      if (!in) {
+        throw InputError(spec.path, "\"" + spec.value +
+                                        "\" is neither a list of point ids nor a readable file");
+      }
+      std::stringstream text;
+      text << in.rdbuf();
+      ids = readIds(text.str(), spec.path, "node set file \"" + fileName + "\"", maxId);
+    }
+    if (ids.empty()) throw InputError(spec.path, "the node set is empty");
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    sets[spec.name] = ids;
+  }
+  return sets;
+}
+
+std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,
+                             const std::vector<long long>& ownedGlobalIds) {
+  std::unordered_map<long long, int> localOf;
+  localOf.reserve(ownedGlobalIds.size() * 2);
+  for (std::size_t i = 0; i < ownedGlobalIds.size(); ++i) localOf[ownedGlobalIds[i]] = static_cast<int>(i);
+  std::vector<int> out;
+  for (long long g : setGlobalIds) {
+    auto it = localOf.find(g);
+    if (it != localOf.end()) out.push_back(it->second);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace peridot

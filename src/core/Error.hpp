@@ -1,0 +1,23 @@
+#pragma once
+// Errors a user can cause carry the deck path (or file) they come from; the application
+// prints them as one line and exits non-zero before any output file is written.
+#include <stdexcept>
+#include <string>
+
+namespace peridot {
+
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  // "Materials -> My Material -> Bulk Modulus: expected a positive number, got "abc""
+  InputError(const std::string& path, const std::string& message)
+      : std::runtime_error(path.empty() ? message : path + ": " + message) {}
+};
+
+// A failure during the run (non-finite force, I/O failure while writing), not the deck's fault.
+class RunError : public std::runtime_error {
+ public:
+  explicit RunError(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace peridot

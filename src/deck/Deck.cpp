@@ -1,0 +1,265 @@
+#include "deck/Deck.hpp"
+
+#include <Teuchos_XMLParameterListCoreHelpers.hpp>
+#include <Teuchos_YamlParameterListCoreHelpers.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+// Parses the whole string as a number; false if anything but blanks is left over.
+bool parseNumber(const std::string& text, double& value) {
+  const std::string t = trim(text);
+  if (t.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(t.c_str(), &end);
+  return end == t.c_str() + t.size() && errno == 0 && std::isfinite(value);
+}
+
+}  // namespace
+
+std::string joinPath(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + " -> " + key;
+}
+
+std::string describeEntry(const Teuchos::ParameterEntry& e) {
+  if (e.isList()) return "a parameter list";
+  if (e.isType<std::string>()) return "\"" + Teuchos::getValue<std::string>(e) + "\"";
+  std::ostringstream s;
+  s.precision(17);
+  if (e.isType<double>()) {
+    s << Teuchos::getValue<double>(e);
+  } else if (e.isType<int>()) {
+    s << Teuchos::getValue<int>(e);
+  } else if (e.isType<long long>()) {
+    s << Teuchos::getValue<long long>(e);
+  } else if (e.isType<bool>()) {
+    s << (Teuchos::getValue<bool>(e) ? "true" : "false");
+  } else {
+    s << "a value of type " << e.getAny(false).typeName();
+  }
+  return s.str();
+}
+
+Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
+  std::ifstream probe(fileName);
+  if (!probe) throw InputError("cannot open deck file \"" + fileName + "\"");
+  const bool yaml = endsWith(fileName, ".yaml") || endsWith(fileName, ".yml");
+  const bool xml = endsWith(fileName, ".xml");
+  if (!yaml && !xml) {
+    throw InputError("deck file \"" + fileName + "\" must end in .xml, .yaml or .yml");
+  }
+  Teuchos::RCP<Teuchos::ParameterList> deck;
+  try {
+    deck = yaml ? Teuchos::getParametersFromYamlFile(fileName)
+                : Teuchos::getParametersFromXmlFile(fileName);
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    // Teuchos prefixes its messages with source locations; keep the last informative line.
+    std::istringstream lines(what);
+    std::string line, last;
+    while (std::getline(lines, line))
+      if (!trim(line).empty()) last = trim(line);
+    throw InputError("cannot parse deck file \"" + fileName + "\" as " +
+                     (yaml ? "YAML" : "XML") + ": " + last);
+  }
+  // Teuchos' YAML reader returns the top-level `Peridigm:` map's content as the list itself in
+  // some versions and as a sublist in others.
+  if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
+    deck = Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
+  }
+  return deck;
+}
+
+ListReader::ListReader(const Teuchos::ParameterList& list, std::string path)
+    : list_(list), path_(std::move(path)) {}
+
+bool ListReader::has(const std::string& key) const { return list_.isParameter(key); }
+
+bool ListReader::isSublist(const std::string& key) const { return list_.isSublist(key); }
+
+void ListReader::require(const std::string& key) const {
+  if (!list_.isParameter(key)) throw InputError(pathOf(key), "required parameter is missing");
+}
+
+const Teuchos::ParameterEntry& ListReader::entry(const std::string& key) {
+  require(key);
+  used_.insert(key);
+  return *list_.getEntryPtr(key);
+}
+
+double ListReader::number(const std::string& key) {
+  const auto& e = entry(key);
+  if (e.isType<double>()) {
+    const double v = Teuchos::getValue<double>(e);
+    if (!std::isfinite(v)) throw InputError(pathOf(key), "expected a finite number");
+    return v;
+  }
+  if (e.isType<int>()) return Teuchos::getValue<int>(e);
+  if (e.isType<long long>()) return static_cast<double>(Teuchos::getValue<long long>(e));
+  double v = 0.0;
+  if (e.isType<std::string>() && parseNumber(Teuchos::getValue<std::string>(e), v)) return v;
+  throw InputError(pathOf(key), "expected a number, got " + describeEntry(e));
+}
+
+double ListReader::number(const std::string& key, double defaultValue) {
+  return has(key) ? number(key) : defaultValue;
+}
+
+double ListReader::positiveNumber(const std::string& key) {
+  const auto& e = entry(key);
+  double v = 0.0;
+  bool ok = false;
+  if (e.isType<double>()) {
+    v = Teuchos::getValue<double>(e);
+    ok = true;
+  } else if (e.isType<int>()) {
+    v = Teuchos::getValue<int>(e);
+    ok = true;
+  } else if (e.isType<long long>()) {
+    v = static_cast<double>(Teuchos::getValue<long long>(e));
+    ok = true;
+  } else if (e.isType<std::string>()) {
+    ok = parseNumber(Teuchos::getValue<std::string>(e), v);
+  }
+  if (!ok || !(v > 0.0) || !std::isfinite(v)) {
+    throw InputError(pathOf(key), "expected a positive number, got " + describeEntry(e));
+  }
+  return v;
+}
+
+double ListReader::positiveNumber(const std::string& key, double defaultValue) {
+  return has(key) ? positiveNumber(key) : defaultValue;
+}
+
+double ListReader::nonNegativeNumber(const std::string& key, double defaultValue) {
+  if (!has(key)) return defaultValue;
+  const double v = number(key);
+  if (v < 0.0) {
+    throw InputError(pathOf(key),
+                     "expected a non-negative number, got " + describeEntry(*list_.getEntryPtr(key)));
+  }
+  return v;
+}
+
+long long ListReader::integer(const std::string& key) {
+  const auto& e = entry(key);
+  if (e.isType<int>()) return Teuchos::getValue<int>(e);
+  if (e.isType<long long>()) return Teuchos::getValue<long long>(e);
+  double v = 0.0;
+  const bool parsed = (e.isType<double>() && ((v = Teuchos::getValue<double>(e)), true)) ||
+                      (e.isType<std::string>() && parseNumber(Teuchos::getValue<std::string>(e), v));
+  if (parsed && std::floor(v) == v && std::fabs(v) < 9e15) return static_cast<long long>(v);
+  throw InputError(pathOf(key), "expected an integer, got " + describeEntry(e));
+}
+
+long long ListReader::integer(const std::string& key, long long defaultValue) {
+  return has(key) ? integer(key) : defaultValue;
+}
+
+bool ListReader::boolean(const std::string& key, bool defaultValue) {
+  if (!has(key)) return defaultValue;
+  const auto& e = entry(key);
+  if (e.isType<bool>()) return Teuchos::getValue<bool>(e);
+  if (e.isType<std::string>()) {
+    const std::string s = trim(Teuchos::getValue<std::string>(e));
+    if (s == "true" || s == "True" || s == "TRUE" || s == "1") return true;
+    if (s == "false" || s == "False" || s == "FALSE" || s == "0") return false;
+  }
+  if (e.isType<int>()) {
+    const int v = Teuchos::getValue<int>(e);
+    if (v == 0 || v == 1) return v == 1;
+  }
+  throw InputError(pathOf(key), "expected true or false, got " + describeEntry(e));
+}
+
+std::string ListReader::string(const std::string& key) {
+  const auto& e = entry(key);
+  if (!e.isType<std::string>()) {
+    throw InputError(pathOf(key), "expected a string, got " + describeEntry(e));
+  }
+  return Teuchos::getValue<std::string>(e);
+}
+
+std::string ListReader::string(const std::string& key, const std::string& defaultValue) {
+  return has(key) ? string(key) : defaultValue;
+}
+
+std::string ListReader::choice(const std::string& key, const std::vector<std::string>& choices,
+                               const std::string& defaultValue) {
+  if (!has(key) && !defaultValue.empty()) return defaultValue;
+  const std::string v = string(key);
+  for (const auto& c : choices)
+    if (v == c) return v;
+  std::string list;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    list += (i ? ", \"" : "\"") + choices[i] + "\"";
+  throw InputError(pathOf(key), "unknown value \"" + v + "\"; expected one of " + list);
+}
+
+std::string ListReader::numberOrExpression(const std::string& key) {
+  const auto& e = entry(key);
+  if (e.isList()) throw InputError(pathOf(key), "expected a number or an expression, got a list");
+  if (e.isType<std::string>()) return Teuchos::getValue<std::string>(e);
+  std::ostringstream s;
+  s.precision(17);
+  if (e.isType<double>()) {
+    s << Teuchos::getValue<double>(e);
+  } else if (e.isType<int>()) {
+    s << Teuchos::getValue<int>(e);
+  } else if (e.isType<long long>()) {
+    s << Teuchos::getValue<long long>(e);
+  } else {
+    throw InputError(pathOf(key), "expected a number or an expression, got " + describeEntry(e));
+  }
+  return s.str();
+}
+
+ListReader ListReader::sublist(const std::string& key) {
+  if (!list_.isParameter(key)) throw InputError(pathOf(key), "required list is missing");
+  if (!list_.isSublist(key)) {
+    throw InputError(pathOf(key),
+                     "expected a parameter list, got " + describeEntry(*list_.getEntryPtr(key)));
+  }
+  used_.insert(key);
+  return ListReader(list_.sublist(key), pathOf(key));
+}
+
+std::vector<std::string> ListReader::keys() const {
+  std::vector<std::string> out;
+  for (auto it = list_.begin(); it != list_.end(); ++it) out.push_back(list_.name(it));
+  return out;
+}
+
+void ListReader::finish() const {
+  for (auto it = list_.begin(); it != list_.end(); ++it) {
+    const std::string& key = list_.name(it);
+    if (!used_.count(key)) {
+      throw InputError(pathOf(key), std::string("unknown ") +
+                                        (list_.entry(it).isList() ? "list" : "parameter") +
+                                        " (not part of Peridot's deck vocabulary; see doc/deck-reference.md)");
+    }
+  }
+}
+
+}  // namespace peridot

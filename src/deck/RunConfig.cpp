@@ -1,0 +1,304 @@
+#include "deck/RunConfig.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "deck/Expression.hpp"
+
+namespace peridot {
+
+namespace {
+
+const std::vector<std::string> kXYZT = {"x", "y", "z", "t"};
+
+std::vector<std::string> splitWords(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> out;
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+std::string normalizedConditionType(std::string s) {
+  // Peridigm compares condition types ignoring case and spaces.
+  s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c) || c == '_'; }),
+          s.end());
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool containsNoCase(const std::string& haystack, const std::string& needle) {
+  std::string h = haystack, n = needle;
+  std::transform(h.begin(), h.end(), h.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });
+  return h.find(n) != std::string::npos;
+}
+
+void readBoundaryConditions(ListReader bc, RunConfig& config) {
+  for (const auto& key : bc.keys()) {
+    if (!bc.isSublist(key)) {
+      if (key == "Create Node Set For Rank Deficient Nodes") {
+        bc.boolean(key, false);
+        continue;
+      }
+      if (!containsNoCase(key, "Node Set")) {
+        throw InputError(bc.pathOf(key), "unknown parameter; node sets are parameters whose name "
+                                         "contains \"Node Set\", conditions are sublists");
+      }
+      config.nodeSets.push_back({key, bc.pathOf(key), bc.string(key)});
+      continue;
+    }
+    ListReader c = bc.sublist(key);
+    ConditionConfig cc;
+    cc.name = key;
+    cc.path = c.path();
+    const std::string type = c.string("Type");
+    const std::string t = normalizedConditionType(type);
+    if (t == "initialdisplacement") {
+      cc.kind = ConditionConfig::Kind::InitialDisplacement;
+    } else if (t == "initialvelocity") {
+      cc.kind = ConditionConfig::Kind::InitialVelocity;
+    } else if (t == "prescribeddisplacement") {
+      cc.kind = ConditionConfig::Kind::PrescribedDisplacement;
+    } else if (t == "bodyforce") {
+      cc.kind = ConditionConfig::Kind::BodyForce;
+    } else if (t == "prescribedtemperature" || t == "initialtemperature" || t == "thermalflux" ||
+               t == "prescribedfluidpressureu" || t == "initialfluidpressureu") {
+      throw InputError(c.pathOf("Type"), "\"" + type + "\" conditions are not supported by Peridot yet");
+    } else {
+      throw InputError(c.pathOf("Type"),
+                       "unknown condition type \"" + type +
+                           "\"; expected \"Initial Displacement\", \"Initial Velocity\", "
+                           "\"Prescribed Displacement\" or \"Body Force\"");
+    }
+    cc.nodeSet = c.string("Node Set");
+    const std::string coordinate = c.choice("Coordinate", {"x", "y", "z", "X", "Y", "Z"});
+    cc.coordinate = std::tolower(static_cast<unsigned char>(coordinate[0])) - 'x';
+    cc.value = c.numberOrExpression("Value");
+    Expression check(cc.value, kXYZT, c.pathOf("Value"));
+    (void)check;
+    c.finish();
+    config.conditions.push_back(cc);
+  }
+  bc.finish();
+}
+
+SolverConfig readSolver(ListReader s) {
+  SolverConfig sc;
+  sc.path = s.path();
+  s.boolean("Verbose", false);
+  sc.initialTime = s.number("Initial Time", 0.0);
+  sc.finalTime = s.number("Final Time", 1.0);
+  if (!(sc.finalTime > sc.initialTime)) {
+    throw InputError(s.pathOf("Final Time"), "must be larger than the Initial Time");
+  }
+  for (const char* other : {"QuasiStatic", "NOXQuasiStatic", "Implicit", "ImplicitDiffusion"}) {
+    if (s.isSublist(other)) {
+      throw InputError(s.pathOf(other), "this solver is not supported by Peridot yet; use Verlet");
+    }
+  }
+  if (s.has("Peridigm Preconditioner")) s.string("Peridigm Preconditioner");
+  s.boolean("Initialize Predictor From Previous Solver", false);
+  ListReader v = s.sublist("Verlet");
+  if (v.has("Fixed dt")) {
+    sc.fixedDtGiven = true;
+    sc.fixedDt = v.positiveNumber("Fixed dt");
+  }
+  sc.safetyFactor = v.positiveNumber("Safety Factor", 1.0);
+  v.boolean("Verbose", false);
+  v.finish();
+  s.finish();
+  return sc;
+}
+
+OutputConfig readOutput(ListReader o, const std::string& name) {
+  OutputConfig oc;
+  oc.name = name;
+  oc.path = o.path();
+  o.choice("Output File Type", {"ExodusII"}, "ExodusII");
+  o.choice("Output Format", {"BINARY"}, "BINARY");
+  oc.fileName = o.string("Output Filename");
+  if (oc.fileName.empty()) throw InputError(o.pathOf("Output Filename"), "the file name is empty");
+  // As Peridigm does: dots and spaces in the base name become underscores.
+  for (char& ch : oc.fileName)
+    if (ch == '.' || ch == ' ') ch = '_';
+  oc.frequency = o.integer("Output Frequency", 1);
+  if (oc.frequency == 0 || oc.frequency < -1) {
+    throw InputError(o.pathOf("Output Frequency"), "expected a positive integer or -1 (never)");
+  }
+  oc.initialStep = o.integer("Initial Output Step", 0);
+  oc.finalStep = o.integer("Final Output Step", -1);
+  o.boolean("Parallel Write", true);
+  if (o.has("Bond Family")) throw InputError(o.pathOf("Bond Family"), "not supported by Peridot yet");
+  ListReader vars = o.sublist("Output Variables");
+  for (const auto& key : vars.keys()) {
+    if (vars.boolean(key, false)) oc.variables.push_back(key);
+  }
+  vars.finish();
+  o.finish();
+  return oc;
+}
+
+ComputeConfig readCompute(ListReader c, const std::string& name) {
+  ComputeConfig cc;
+  cc.name = name;
+  cc.path = c.path();
+  cc.computeClass = c.choice("Compute Class", {"Block_Data", "Node_Set_Data"});
+  cc.calculation = c.choice("Calculation Type", {"Sum", "Minimum", "Maximum"});
+  cc.region = c.string(cc.computeClass == "Block_Data" ? "Block" : "Node Set");
+  cc.variable = c.string("Variable");
+  cc.label = c.string("Output Label");
+  if (cc.label.empty()) throw InputError(c.pathOf("Output Label"), "the label is empty");
+  if (!findOutputVariable(cc.variable)) {
+    throw InputError(c.pathOf("Variable"), "unknown variable \"" + cc.variable + "\"");
+  }
+  c.boolean("Verbose", false);
+  c.finish();
+  return cc;
+}
+
+}  // namespace
+
+const std::vector<VariableInfo>& knownOutputVariables() {
+  static const std::vector<VariableInfo> vars = {
+      {"Volume", 1, "point volume"},
+      {"Block_Id", 1, "block id of the point"},
+      {"Element_Id", 1, "global point id (Exodus element id)"},
+      {"Proc_Num", 1, "MPI rank owning the point"},
+      {"Horizon", 1, "horizon of the point"},
+      {"Number_Of_Neighbors", 1, "bonds of the point (at the start)"},
+      {"Model_Coordinates", 3, "reference coordinates"},
+      {"Coordinates", 3, "current coordinates"},
+      {"Displacement", 3, "displacement"},
+      {"Velocity", 3, "velocity"},
+      {"Acceleration", 3, "acceleration"},
+      {"Force_Density", 3, "internal force density"},
+      {"Force", 3, "internal force density x volume"},
+      {"External_Force_Density", 3, "body force density"},
+      {"Damage", 1, "fraction of broken bonds"},
+      {"Dilatation", 1, "LPS dilatation"},
+      {"Weighted_Volume", 1, "LPS weighted volume"},
+      {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
+      {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
+      {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},
+      {"Global_Kinetic_Energy", 0, "sum of Kinetic_Energy (global variable)"},
+      {"Global_Stored_Elastic_Energy", 0, "sum of Stored_Elastic_Energy (global variable)"},
+  };
+  return vars;
+}
+
+const VariableInfo* findOutputVariable(const std::string& name) {
+  for (const auto& v : knownOutputVariables())
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
+  RunConfig config;
+  ListReader top(deck, "");
+  config.verbose = top.boolean("Verbose", false);
+  config.discretization = readDiscretizationConfig(top.sublist("Discretization"));
+
+  ListReader materials = top.sublist("Materials");
+  for (const auto& name : materials.keys()) {
+    ListReader m = materials.sublist(name);
+    config.materials[name] = createMaterial(m);
+  }
+  materials.finish();
+  if (config.materials.empty()) throw InputError("Materials", "no material is defined");
+
+  if (top.has("Damage Models")) {
+    ListReader damage = top.sublist("Damage Models");
+    for (const auto& name : damage.keys()) {
+      ListReader d = damage.sublist(name);
+      config.damageModels[name] = createDamageModel(d);
+    }
+    damage.finish();
+  }
+
+  ListReader blocks = top.sublist("Blocks");
+  for (const auto& name : blocks.keys()) {
+    ListReader b = blocks.sublist(name);
+    BlockGroupConfig g;
+    g.name = name;
+    g.path = b.path();
+    g.blockNames = splitWords(b.string("Block Names"));
+    if (g.blockNames.empty()) throw InputError(b.pathOf("Block Names"), "no block name given");
+    g.material = b.string("Material");
+    if (!config.materials.count(g.material)) {
+      throw InputError(b.pathOf("Material"), "unknown material \"" + g.material +
+                                                 "\"; it must be the name of a list in Materials");
+    }
+    if (b.has("Damage Model")) {
+      g.damageModel = b.string("Damage Model");
+      if (!config.damageModels.count(g.damageModel)) {
+        throw InputError(b.pathOf("Damage Model"),
+                         "unknown damage model \"" + g.damageModel +
+                             "\"; it must be the name of a list in Damage Models");
+      }
+    }
+    g.horizon = b.numberOrExpression("Horizon");
+    Expression horizon(g.horizon, {"x", "y", "z"}, b.pathOf("Horizon"));
+    if (horizon.isConstant() && !(horizon.evaluate(nullptr) > 0)) {
+      throw InputError(b.pathOf("Horizon"), "expected a positive number, got \"" + g.horizon + "\"");
+    }
+    b.finish();
+    config.blocks.push_back(g);
+  }
+  blocks.finish();
+  if (config.blocks.empty()) throw InputError("Blocks", "no block group is defined");
+
+  if (top.has("Boundary Conditions")) readBoundaryConditions(top.sublist("Boundary Conditions"), config);
+
+  if (top.has("Compute Class Parameters")) {
+    ListReader computes = top.sublist("Compute Class Parameters");
+    for (const auto& name : computes.keys())
+      config.computes.push_back(readCompute(computes.sublist(name), name));
+    computes.finish();
+  }
+
+  bool haveSolver = false;
+  for (const auto& key : top.keys()) {
+    if (key.find("Solver") != std::string::npos && top.isSublist(key)) {
+      if (haveSolver) {
+        throw InputError(key, "Peridot runs one solver per deck; a second solver list is not supported yet");
+      }
+      config.solver = readSolver(top.sublist(key));
+      haveSolver = true;
+    } else if (key.find("Output") != std::string::npos && top.isSublist(key)) {
+      config.outputs.push_back(readOutput(top.sublist(key), key));
+    }
+  }
+  if (!haveSolver) throw InputError("Solver", "required list is missing");
+
+  // Every requested output variable must be known (or a compute's label).
+  for (const auto& out : config.outputs) {
+    for (const auto& v : out.variables) {
+      if (findOutputVariable(v)) continue;
+      bool isLabel = false;
+      for (const auto& c : config.computes) isLabel = isLabel || c.label == v;
+      if (!isLabel) {
+        throw InputError(joinPath(joinPath(out.path, "Output Variables"), v),
+                         "unknown output variable (see doc/deck-reference.md for the list)");
+      }
+    }
+  }
+
+  for (const char* unsupported : {"Contact", "Data Loader", "Multiphysics", "Optimization Based Coupling"}) {
+    if (top.has(unsupported)) {
+      throw InputError(unsupported, "not supported by Peridot yet");
+    }
+  }
+  if (top.has("Restart")) {
+    const auto& e = deck.getEntry("Restart");
+    if (e.isList() || top.boolean("Restart", false)) {
+      throw InputError("Restart", "restart is not supported by Peridot yet");
+    }
+  }
+  top.finish();
+  return config;
+}
+
+}  // namespace peridot

@@ -1,0 +1,79 @@
+#pragma once
+// The whole deck, validated and typed, before any work is done: every key is read here (or by
+// the model it belongs to), so a misspelt or unsupported key stops the run at once.
+#include <Teuchos_ParameterList.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "damage/DamageModel.hpp"
+#include "discretization/Discretization.hpp"
+#include "materials/MaterialModel.hpp"
+
+namespace peridot {
+
+struct BlockGroupConfig {
+  std::string name, path;
+  std::vector<std::string> blockNames;  // "Default" matches every block not named elsewhere
+  std::string material, damageModel;    // damageModel empty when none
+  std::string horizon;                  // number or expression in x, y, z
+};
+
+struct NodeSetSpec {
+  std::string name, path;
+  std::string value;  // whitespace-separated 1-based ids, or a file name holding them
+};
+
+struct ConditionConfig {
+  enum class Kind { InitialDisplacement, InitialVelocity, PrescribedDisplacement, BodyForce };
+  Kind kind = Kind::InitialVelocity;
+  std::string name, path, nodeSet;
+  int coordinate = 0;  // 0, 1, 2
+  std::string value;   // expression in x, y, z, t
+};
+
+struct SolverConfig {
+  std::string path;
+  double initialTime = 0.0, finalTime = 1.0;
+  bool fixedDtGiven = false;
+  double fixedDt = 0.0, safetyFactor = 1.0;
+};
+
+struct OutputConfig {
+  std::string name, path, fileName;  // fileName without extension
+  long long frequency = 1, initialStep = 0, finalStep = -1;
+  std::vector<std::string> variables;  // requested names, deck order
+};
+
+struct ComputeConfig {
+  std::string name, path, computeClass, calculation, region, variable, label;
+};
+
+struct RunConfig {
+  bool verbose = false;
+  DiscretizationConfig discretization;
+  std::map<std::string, std::shared_ptr<MaterialModel>> materials;
+  std::map<std::string, std::shared_ptr<DamageModel>> damageModels;
+  std::vector<BlockGroupConfig> blocks;
+  std::vector<NodeSetSpec> nodeSets;
+  std::vector<ConditionConfig> conditions;
+  SolverConfig solver;
+  std::vector<OutputConfig> outputs;
+  std::vector<ComputeConfig> computes;
+};
+
+RunConfig readRunConfig(const Teuchos::ParameterList& deck);
+
+// Output variables Peridot knows, with the number of components (1 or 3) and whether they are
+// written per node (vectors) or per element (scalars), Peridigm's layout.
+struct VariableInfo {
+  std::string name;
+  int components;
+  std::string description;
+};
+const std::vector<VariableInfo>& knownOutputVariables();
+const VariableInfo* findOutputVariable(const std::string& name);
+
+}  // namespace peridot

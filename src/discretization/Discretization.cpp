@@ -1,0 +1,293 @@
+#include "discretization/Discretization.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "discretization/ExodusMeshReader.hpp"
+
+namespace peridot {
+
+namespace {
+
+const double kPi = 3.14159265358979323846;
+
+void readVector3(ListReader& r, const std::string& prefix, double* out, bool required,
+                 const char* suffixes = "XYZ") {
+  for (int d = 0; d < 3; ++d) {
+    const std::string key = prefix + suffixes[d];
+    out[d] = required ? r.number(key) : r.number(key, out[d]);
+  }
+}
+
+BondFilter readBondFilter(ListReader r, const std::string& name) {
+  BondFilter f;
+  f.name = name;
+  const std::string type = r.choice("Type", {"Rectangular_Plane", "Disk"});
+  if (type == "Rectangular_Plane") {
+    f.kind = BondFilter::Kind::RectangularPlane;
+    readVector3(r, "Normal_", f.normal, true);
+    readVector3(r, "Lower_Left_Corner_", f.lowerLeftCorner, true);
+    readVector3(r, "Bottom_Unit_Vector_", f.bottomUnitVector, true);
+    f.bottomLength = r.positiveNumber("Bottom_Length");
+    f.sideLength = r.positiveNumber("Side_Length");
+  } else {
+    f.kind = BondFilter::Kind::Disk;
+    readVector3(r, "Center_", f.center, true);
+    readVector3(r, "Normal_", f.normal, true);
+    f.radius = r.positiveNumber("Radius");
+  }
+  const double n = std::sqrt(f.normal[0] * f.normal[0] + f.normal[1] * f.normal[1] +
+                             f.normal[2] * f.normal[2]);
+  if (!(n > 0)) throw InputError(r.path(), "the normal vector must not be zero");
+  for (double& c : f.normal) c /= n;
+  if (f.kind == BondFilter::Kind::RectangularPlane) {
+    const double b = std::sqrt(f.bottomUnitVector[0] * f.bottomUnitVector[0] +
+                               f.bottomUnitVector[1] * f.bottomUnitVector[1] +
+                               f.bottomUnitVector[2] * f.bottomUnitVector[2]);
+    if (!(b > 0)) throw InputError(r.path(), "the bottom unit vector must not be zero");
+    for (double& c : f.bottomUnitVector) c /= b;
+  }
+  r.finish();
+  return f;
+}
+
+}  // namespace
+
+bool BondFilter::cuts(const double* p, const double* q) const {
+  const double* origin = kind == Kind::Disk ? center : lowerLeftCorner;
+  const double dp = (p[0] - origin[0]) * normal[0] + (p[1] - origin[1]) * normal[1] +
+                    (p[2] - origin[2]) * normal[2];
+  const double dq = (q[0] - origin[0]) * normal[0] + (q[1] - origin[1]) * normal[1] +
+                    (q[2] - origin[2]) * normal[2];
+  // Both ends strictly on one side: no crossing. A bond lying in the plane is not cut.
+  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
+  const double t = dp / (dp - dq);
+  double hit[3];
+  for (int d = 0; d < 3; ++d) hit[d] = p[d] + t * (q[d] - p[d]) - origin[d];
+  if (kind == Kind::Disk) {
+    return hit[0] * hit[0] + hit[1] * hit[1] + hit[2] * hit[2] <= radius * radius;
+  }
+  // side direction = normal x bottom
+  const double side[3] = {normal[1] * bottomUnitVector[2] - normal[2] * bottomUnitVector[1],
+                          normal[2] * bottomUnitVector[0] - normal[0] * bottomUnitVector[2],
+                          normal[0] * bottomUnitVector[1] - normal[1] * bottomUnitVector[0]};
+  const double a = hit[0] * bottomUnitVector[0] + hit[1] * bottomUnitVector[1] +
+                   hit[2] * bottomUnitVector[2];
+  const double b = hit[0] * side[0] + hit[1] * side[1] + hit[2] * side[2];
+  return a >= 0 && a <= bottomLength && b >= 0 && b <= sideLength;
+}
+
+DiscretizationConfig readDiscretizationConfig(ListReader r) {
+  DiscretizationConfig c;
+  c.type = r.choice("Type", {"Exodus", "Text File", "PdQuickGrid"});
+  if (r.has("Horizon")) {
+    throw InputError(r.pathOf("Horizon"),
+                     "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
+  }
+  if (c.type == "Exodus" || c.type == "Text File") {
+    c.meshFile = r.string("Input Mesh File");
+    c.meshFilePath = r.pathOf("Input Mesh File");
+    if (c.meshFile.empty()) throw InputError(c.meshFilePath, "the file name is empty");
+  } else {
+    const bool box = r.isSublist("TensorProduct3DMeshGenerator");
+    const bool cyl = r.isSublist("TensorProductCylinderMeshGenerator");
+    if (box == cyl) {
+      throw InputError(r.path(),
+                       "PdQuickGrid needs exactly one of the sublists TensorProduct3DMeshGenerator "
+                       "and TensorProductCylinderMeshGenerator");
+    }
+    if (box) {
+      ListReader g = r.sublist("TensorProduct3DMeshGenerator");
+      c.generatorPath = g.path();
+      c.generator = DiscretizationConfig::Generator::TensorProduct3D;
+      if (g.has("Type")) g.choice("Type", {"PdQuickGrid"});
+      const char* axes[3] = {"X", "Y", "Z"};
+      for (int d = 0; d < 3; ++d) {
+        c.origin[d] = g.number(std::string(axes[d]) + " Origin");
+        c.length[d] = g.positiveNumber(std::string(axes[d]) + " Length");
+        c.numPoints[d] = g.integer(std::string("Number Points ") + axes[d]);
+        if (c.numPoints[d] < 1) {
+          throw InputError(g.pathOf(std::string("Number Points ") + axes[d]),
+                           "expected a positive integer, got " + std::to_string(c.numPoints[d]));
+        }
+      }
+      g.finish();
+    } else {
+      ListReader g = r.sublist("TensorProductCylinderMeshGenerator");
+      c.generatorPath = g.path();
+      c.generator = DiscretizationConfig::Generator::Cylinder;
+      if (g.has("Type")) g.choice("Type", {"PdQuickGrid"});
+      c.innerRadius = g.nonNegativeNumber("Inner Radius", 0.0);
+      g.accept("Inner Radius");
+      c.outerRadius = g.positiveNumber("Outer Radius");
+      c.cylinderLength = g.positiveNumber("Cylinder Length");
+      c.numRadius = g.integer("Number Points Radius");
+      c.ringCenter[0] = g.number("Ring Center x", 0.0);
+      c.ringCenter[1] = g.number("Ring Center y", 0.0);
+      c.zOrigin = g.number("Z Origin", 0.0);
+      if (c.numRadius < 1) {
+        throw InputError(g.pathOf("Number Points Radius"), "expected a positive integer");
+      }
+      if (!(c.outerRadius > c.innerRadius)) {
+        throw InputError(g.pathOf("Outer Radius"), "must be larger than the Inner Radius");
+      }
+      g.finish();
+    }
+    if (r.has("NeighborhoodType")) {
+      r.choice("NeighborhoodType", {"Spherical"});
+      c.spherical = true;
+    }
+  }
+  if (r.has("Omit Bonds Between Blocks")) {
+    c.omitBondsBetweenBlocks = r.choice("Omit Bonds Between Blocks", {"None", "All"}) == "All";
+  }
+  c.influenceFunction = r.has("Influence Function") ? r.string("Influence Function") : "One";
+  if (r.isSublist("Bond Filters")) {
+    if (c.type == "PdQuickGrid") {
+      throw InputError(r.pathOf("Bond Filters"),
+                       "bond filters are not available with PdQuickGrid (as in Peridigm); use an "
+                       "Exodus or Text File discretization");
+    }
+    ListReader filters = r.sublist("Bond Filters");
+    for (const auto& name : filters.keys()) {
+      c.bondFilters.push_back(readBondFilter(filters.sublist(name), name));
+    }
+    filters.finish();
+  }
+  r.boolean("Verbose", false);
+  r.boolean("Store Exodus Mesh", false);
+  if (r.has("Construct Neighborhood Lists") && !r.boolean("Construct Neighborhood Lists", true)) {
+    throw InputError(r.pathOf("Construct Neighborhood Lists"), "false is not supported");
+  }
+  for (const char* key : {"Compute Element-Horizon Intersections", "Construct Interfaces"}) {
+    if (r.has(key) && r.boolean(key, false)) {
+      throw InputError(r.pathOf(key), "not supported by Peridot yet");
+    }
+  }
+  r.finish();
+  return c;
+}
+
+PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath) {
+  std::ifstream in(fileName);
+  if (!in) throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\"");
+  PointCloud cloud;
+  std::string line;
+  long long lineNumber = 0;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    const char c0 = line[first];
+    if (c0 == '#' || c0 == '/' || c0 == '*') continue;
+    std::istringstream s(line);
+    double x, y, z, blockValue, volume;
+    std::string extra;
+    if (!(s >> x >> y >> z >> blockValue >> volume) || (s >> extra)) {
+      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
+                                     std::to_string(lineNumber) +
+                                     ": expected five numbers \"x y z block_id volume\"");
+    }
+    const int block = static_cast<int>(blockValue);
+    if (block != blockValue || block < 1) {
+      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
+                                     std::to_string(lineNumber) +
+                                     ": the block id must be a positive integer");
+    }
+    if (!(volume > 0) || !std::isfinite(x + y + z + volume)) {
+      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
+                                     std::to_string(lineNumber) +
+                                     ": the volume must be positive and all values finite");
+    }
+    cloud.globalId.push_back(static_cast<long long>(cloud.volume.size()));
+    cloud.x.insert(cloud.x.end(), {x, y, z});
+    cloud.blockId.push_back(block);
+    cloud.volume.push_back(volume);
+    cloud.blockNames.emplace(block, "block_" + std::to_string(block));
+  }
+  if (cloud.size() == 0) {
+    throw InputError(deckPath, "text mesh \"" + fileName + "\" contains no points");
+  }
+  return cloud;
+}
+
+namespace {
+
+PointCloud tensorProduct3D(const DiscretizationConfig& c) {
+  PointCloud cloud;
+  const long long nx = c.numPoints[0], ny = c.numPoints[1], nz = c.numPoints[2];
+  const double h[3] = {c.length[0] / nx, c.length[1] / ny, c.length[2] / nz};
+  const double volume = h[0] * h[1] * h[2];
+  const std::size_t n = static_cast<std::size_t>(nx * ny * nz);
+  cloud.x.reserve(3 * n);
+  cloud.volume.assign(n, volume);
+  cloud.blockId.assign(n, 1);
+  cloud.globalId.resize(n);
+  // x fastest, then y, then z; ids in that order (as Peridigm's generator numbers them).
+  for (long long k = 0; k < nz; ++k)
+    for (long long j = 0; j < ny; ++j)
+      for (long long i = 0; i < nx; ++i) {
+        cloud.x.push_back(c.origin[0] + (i + 0.5) * h[0]);
+        cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
+        cloud.x.push_back(c.origin[2] + (k + 0.5) * h[2]);
+      }
+  for (std::size_t p = 0; p < n; ++p) cloud.globalId[p] = static_cast<long long>(p);
+  cloud.blockNames[1] = "block_1";
+  return cloud;
+}
+
+// Rings of cells between the radii: each ring has about as many cells around as makes them
+// square in (r, theta); the axial spacing equals the radial one.
+PointCloud tensorProductCylinder(const DiscretizationConfig& c) {
+  PointCloud cloud;
+  const double dr = (c.outerRadius - c.innerRadius) / c.numRadius;
+  const long long nz = std::max<long long>(1, std::llround(c.cylinderLength / dr));
+  const double dz = c.cylinderLength / nz;
+  const double rMid = 0.5 * (c.innerRadius + c.outerRadius);
+  const long long nTheta = std::max<long long>(3, std::llround(2.0 * kPi * rMid / dr));
+  const double dTheta = 2.0 * kPi / nTheta;
+  long long id = 0;
+  for (long long k = 0; k < nz; ++k)
+    for (long long t = 0; t < nTheta; ++t)
+      for (long long i = 0; i < c.numRadius; ++i) {
+        const double r0 = c.innerRadius + i * dr, r1 = r0 + dr;
+        const double r = 0.5 * (r0 + r1);
+        const double theta = (t + 0.5) * dTheta;
+        cloud.x.push_back(c.ringCenter[0] + r * std::cos(theta));
+        cloud.x.push_back(c.ringCenter[1] + r * std::sin(theta));
+        cloud.x.push_back(c.zOrigin + (k + 0.5) * dz);
+        cloud.volume.push_back(0.5 * (r1 * r1 - r0 * r0) * dTheta * dz);
+        cloud.blockId.push_back(1);
+        cloud.globalId.push_back(id++);
+      }
+  cloud.blockNames[1] = "block_1";
+  return cloud;
+}
+
+}  // namespace
+
+PointCloud buildPointCloud(const DiscretizationConfig& c) {
+  if (c.type == "Exodus") return readExodusMesh(c.meshFile, c.meshFilePath);
+  if (c.type == "Text File") return readTextMesh(c.meshFile, c.meshFilePath);
+  if (c.generator == DiscretizationConfig::Generator::TensorProduct3D) return tensorProduct3D(c);
+  return tensorProductCylinder(c);
+}
+
+NeighborhoodRule neighborhoodRule(const DiscretizationConfig& c) {
+  NeighborhoodRule rule;
+  if (c.type != "PdQuickGrid") return rule;
+  if (c.spherical || c.generator == DiscretizationConfig::Generator::Cylinder) {
+    rule.kind = NeighborhoodRule::Kind::SphereStrict;
+    return rule;
+  }
+  rule.kind = NeighborhoodRule::Kind::CellBox;
+  for (int d = 0; d < 3; ++d) {
+    rule.cellSize[d] = c.length[d] / c.numPoints[d];
+    rule.cellCount[d] = static_cast<int>(c.numPoints[d]);
+  }
+  return rule;
+}
+
+}  // namespace peridot

@@ -1,0 +1,64 @@
+#pragma once
+// Deck -> PointCloud: the `Discretization` section (Exodus mesh, text file, or Peridigm's
+// PdQuickGrid tensor-product generators) plus the neighbourhood rule that goes with it.
+#include <string>
+#include <vector>
+
+#include "deck/Deck.hpp"
+#include "discretization/PointCloud.hpp"
+
+namespace peridot {
+
+// Bond filters cut bonds whose segment crosses a surface (pre-cracks).
+struct BondFilter {
+  enum class Kind { RectangularPlane, Disk };
+  Kind kind = Kind::RectangularPlane;
+  std::string name;
+  double normal[3] = {0, 0, 1};
+  double lowerLeftCorner[3] = {0, 0, 0};
+  double bottomUnitVector[3] = {1, 0, 0};
+  double bottomLength = 0.0, sideLength = 0.0;
+  double center[3] = {0, 0, 0};
+  double radius = 0.0;
+  // True if the segment p -> q crosses the filter surface.
+  bool cuts(const double* p, const double* q) const;
+};
+
+// How neighbours are selected. Exodus and text meshes use the sphere |xi| <= delta (inclusive);
+// PdQuickGrid's default takes every point within +-n cells per axis (a box); with
+// `NeighborhoodType: Spherical` it keeps |xi| < delta (strict).
+struct NeighborhoodRule {
+  enum class Kind { SphereInclusive, SphereStrict, CellBox };
+  Kind kind = Kind::SphereInclusive;
+  double cellSize[3] = {0, 0, 0};  // CellBox: generator spacing per axis
+  int cellCount[3] = {0, 0, 0};    // CellBox: number of cells per axis (caps n)
+};
+
+struct DiscretizationConfig {
+  std::string type;  // "Exodus", "Text File", "PdQuickGrid"
+  std::string meshFile;
+  std::string meshFilePath;  // deck path of the mesh file key, for messages
+  enum class Generator { None, TensorProduct3D, Cylinder } generator = Generator::None;
+  double origin[3] = {0, 0, 0}, length[3] = {0, 0, 0};
+  long long numPoints[3] = {0, 0, 0};
+  double innerRadius = 0, outerRadius = 0, cylinderLength = 0, ringCenter[2] = {0, 0}, zOrigin = 0;
+  long long numRadius = 0;
+  bool spherical = false;
+  bool omitBondsBetweenBlocks = false;
+  std::vector<BondFilter> bondFilters;
+  std::string influenceFunction = "One";
+  std::string generatorPath;
+};
+
+// Validates the `Discretization` list (reads every key; unknown keys are errors).
+DiscretizationConfig readDiscretizationConfig(ListReader discretization);
+
+// Builds the whole point cloud (every rank may call it; it is deterministic).
+PointCloud buildPointCloud(const DiscretizationConfig& config);
+
+NeighborhoodRule neighborhoodRule(const DiscretizationConfig& config);
+
+// Reads `x y z block_id volume` lines ('#', '/', '*' start comments).
+PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath);
+
+}  // namespace peridot

@@ -1,0 +1,92 @@
+#include "discretization/ElementGeometry.hpp"
+
+#include <cmath>
+
+namespace peridot {
+
+namespace {
+
+// Reference coordinates of the hex corners in Exodus order.
+constexpr double kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                  {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
+double det3(const double a[3], const double b[3], const double c[3]) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+         a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// Position and Jacobian determinant of the trilinear map at reference point r.
+double hexMapAt(const double nodes[8][3], const double r[3], double x[3]) {
+  // d[i][k]: derivative of physical coordinate k with respect to reference coordinate i.
+  double d[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  x[0] = x[1] = x[2] = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const double f[3] = {1.0 + kCorner[a][0] * r[0], 1.0 + kCorner[a][1] * r[1],
+                         1.0 + kCorner[a][2] * r[2]};
+    const double shape = f[0] * f[1] * f[2] / 8.0;
+    const double dShape[3] = {kCorner[a][0] * f[1] * f[2] / 8.0, f[0] * kCorner[a][1] * f[2] / 8.0,
+                              f[0] * f[1] * kCorner[a][2] / 8.0};
+    for (int k = 0; k < 3; ++k) {
+      x[k] += shape * nodes[a][k];
+      for (int i = 0; i < 3; ++i) d[i][k] += dShape[i] * nodes[a][k];
+    }
+  }
+  return det3(d[0], d[1], d[2]);
+}
+
+// Integrates detJ and x*detJ with the 2x2x2 Gauss rule (unit weights).
+double hexIntegrate(const double nodes[8][3], double moment[3]) {
+  const double g = 1.0 / std::sqrt(3.0);
+  double volume = 0.0;
+  moment[0] = moment[1] = moment[2] = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    const double r[3] = {kCorner[q][0] * g, kCorner[q][1] * g, kCorner[q][2] * g};
+    double x[3];
+    const double detJ = hexMapAt(nodes, r, x);
+    volume += detJ;
+    for (int k = 0; k < 3; ++k) moment[k] += x[k] * detJ;
+  }
+  return volume;
+}
+
+}  // namespace
+
+double hexVolume(const double nodes[8][3]) {
+  double moment[3];
+  return hexIntegrate(nodes, moment);
+}
+
+void hexNodeAverage(const double nodes[8][3], double average[3]) {
+  for (int k = 0; k < 3; ++k) {
+    double sum = 0.0;
+    for (int a = 0; a < 8; ++a) sum += nodes[a][k];
+    average[k] = sum / 8.0;
+  }
+}
+
+double hexCentroid(const double nodes[8][3], double centroid[3]) {
+  double moment[3];
+  const double volume = hexIntegrate(nodes, moment);
+  if (volume == 0.0) {
+    hexNodeAverage(nodes, centroid);
+  } else {
+    for (int k = 0; k < 3; ++k) centroid[k] = moment[k] / volume;
+  }
+  return volume;
+}
+
+double tetVolume(const double nodes[4][3]) {
+  double e[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) e[i][k] = nodes[i + 1][k] - nodes[0][k];
+  }
+  return std::fabs(det3(e[0], e[1], e[2])) / 6.0;
+}
+
+void tetCentroid(const double nodes[4][3], double centroid[3]) {
+  for (int k = 0; k < 3; ++k) {
+    centroid[k] = (nodes[0][k] + nodes[1][k] + nodes[2][k] + nodes[3][k]) / 4.0;
+  }
+}
+
+}  // namespace peridot

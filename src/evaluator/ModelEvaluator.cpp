@@ -1,0 +1,149 @@
+#include "evaluator/ModelEvaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/Error.hpp"
+#include "deck/Expression.hpp"
+
+namespace peridot {
+
+ModelEvaluator::ModelEvaluator(const Topology& topology, FieldManager& fields,
+                               std::vector<Block>& blocks, const std::string& influenceFunction,
+                               Timers& timers)
+    : topology_(topology),
+      fields_(fields),
+      blocks_(blocks),
+      influenceFunction_(influenceFunction),
+      timers_(timers) {}
+
+void ModelEvaluator::initialize() {
+  state_.topology = &topology_;
+  state_.fields = &fields_;
+  state_.x = fields_.node("Model_Coordinates", 3);
+  state_.y = fields_.node("Coordinates", 3);
+  state_.volume = fields_.node("Volume", 1);
+  state_.horizon = fields_.node("Horizon", 1);
+  state_.forceDensity = fields_.node("Force_Density", 3);
+
+  // Bond influence: stored per bond only when it is not the constant 1.
+  if (influenceFunction_ != "One") {
+    std::vector<double>& omega = fields_.bond("Influence_Function");
+    const std::int64_t* offsets = topology_.bondOffsets.data();
+    const int* nb = topology_.neighbors.data();
+    const bool parabolic = influenceFunction_ == "Parabolic Decay";
+    const bool gaussian = influenceFunction_ == "Gaussian";
+    std::unique_ptr<Expression> expr;
+    if (!parabolic && !gaussian) {
+      expr = std::make_unique<Expression>(influenceFunction_, std::vector<std::string>{"zeta", "horizon"},
+                                          "Discretization -> Influence Function");
+    }
+    for (int i = 0; i < topology_.numOwned; ++i) {
+      const double delta = state_.horizon[i];
+      for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+        const int j = nb[b];
+        double z2 = 0;
+        for (int d = 0; d < 3; ++d) {
+          const double X = state_.x[3 * j + d] - state_.x[3 * i + d];
+          z2 += X * X;
+        }
+        const double zeta = std::sqrt(z2), r = zeta / delta;
+        if (parabolic) {
+          omega[b] = r < 0.5 ? 1.0 : -4.0 * r * r + 4.0 * r;
+        } else if (gaussian) {
+          omega[b] = std::exp(-z2 / (0.16 * delta * delta));
+        } else {
+          const double vars[2] = {zeta, delta};
+          omega[b] = expr->evaluate(vars);
+          if (!std::isfinite(omega[b])) {
+            throw InputError("Discretization -> Influence Function",
+                             "the expression gives a non-finite value at zeta = " +
+                                 std::to_string(zeta));
+          }
+        }
+      }
+    }
+    state_.influence = omega.data();
+  }
+
+  bool anyDamage = false;
+  for (const auto& b : blocks_) anyDamage = anyDamage || b.damage != nullptr;
+  if (anyDamage) {
+    bondDamage_ = fields_.bond("Bond_Damage").data();
+    state_.bondDamage = bondDamage_;
+  }
+
+  // Bonds may only join points whose models can read each other's per-point state.
+  {
+    double* family = fields_.node("Material_Family_Index", 1);
+    std::vector<std::string> families;
+    for (const auto& b : blocks_) {
+      const std::string f = b.material->family();
+      auto it = std::find(families.begin(), families.end(), f);
+      const int index = static_cast<int>(it - families.begin());
+      if (it == families.end()) families.push_back(f);
+      for (int i : b.points) family[i] = index;
+    }
+    fields_.refreshGhosts("Material_Family_Index");
+    for (int i = 0; i < topology_.numOwned; ++i)
+      for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
+        if (family[topology_.neighbors[b]] != family[i]) {
+          throw InputError("Blocks", "bonds join blocks whose materials are of different kinds (" +
+                                         families[static_cast<int>(family[i])] + " and " +
+                                         families[static_cast<int>(family[topology_.neighbors[b]])] +
+                                         "); set Discretization -> Omit Bonds Between Blocks: All");
+        }
+  }
+
+  std::set<MaterialModel*> declared;
+  for (auto& b : blocks_)
+    if (declared.insert(b.material.get()).second) b.material->declareFields(fields_);
+  std::set<std::string> syncInit, syncPre;
+  for (auto& b : blocks_) {
+    b.material->initialize(state_, b.points);
+    for (const auto& f : b.material->fieldsToSyncAfterInitialize()) syncInit.insert(f);
+    for (const auto& f : b.material->fieldsToSyncAfterPrecompute()) syncPre.insert(f);
+  }
+  for (const auto& f : syncInit) fields_.refreshGhosts(f);
+  syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
+}
+
+void ModelEvaluator::evaluate(double dt) {
+  state_.dt = dt;
+  {
+    Timers::Scope t(timers_, "Ghost exchange");
+    fields_.refreshGhosts("Coordinates");
+  }
+  if (bondDamage_) {
+    Timers::Scope t(timers_, "Damage");
+    for (auto& b : blocks_)
+      if (b.damage) b.damage->computeDamage(state_, b.points, bondDamage_);
+  }
+  if (!syncAfterPrecompute_.empty()) {
+    {
+      Timers::Scope t(timers_, "Force");
+      for (auto& b : blocks_) b.material->precompute(state_, b.points);
+    }
+    Timers::Scope t(timers_, "Ghost exchange");
+    for (const auto& f : syncAfterPrecompute_) fields_.refreshGhosts(f);
+  }
+  Timers::Scope t(timers_, "Force");
+  for (auto& b : blocks_) b.material->computeForce(state_, b.points);
+}
+
+void ModelEvaluator::nodeDamage(double* damage) const {
+  for (int i = 0; i < topology_.numOwned; ++i) {
+    const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];
+    double broken = 0;
+    if (bondDamage_)
+      for (std::int64_t b = b0; b < b1; ++b) broken += bondDamage_[b];
+    damage[i] = b1 > b0 ? broken / static_cast<double>(b1 - b0) : 0.0;
+  }
+}
+
+void ModelEvaluator::storedEnergyDensity(double* energyDensity) const {
+  for (const auto& b : blocks_) b.material->storedEnergyDensity(state_, b.points, energyDensity);
+}
+
+}  // namespace peridot

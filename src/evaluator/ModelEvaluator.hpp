@@ -1,0 +1,45 @@
+#pragma once
+// One model evaluation, in Peridigm's order: ghost refresh of the current coordinates, damage,
+// state-based precompute (then a second ghost refresh of what it produced), force.
+#include <string>
+#include <vector>
+
+#include "core/Timers.hpp"
+#include "evaluator/Block.hpp"
+#include "fields/FieldManager.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+class ModelEvaluator {
+ public:
+  // `influenceFunction`: "One", "Parabolic Decay", "Gaussian" or an expression in zeta, horizon.
+  ModelEvaluator(const Topology& topology, FieldManager& fields, std::vector<Block>& blocks,
+                 const std::string& influenceFunction, Timers& timers);
+
+  // Declares fields, fills bond influence, initializes the models. Reference coordinates,
+  // volumes and horizons must already be in their fields (owned and ghost).
+  void initialize();
+  // Computes the internal force density of all owned points from the current coordinates
+  // (owned values; ghosts are refreshed here).
+  void evaluate(double dt);
+
+  const ModelState& state() const { return state_; }
+  bool hasDamage() const { return bondDamage_ != nullptr; }
+  // Fraction of broken bonds per owned point (0 where no damage model or no bonds).
+  void nodeDamage(double* damage) const;
+  void storedEnergyDensity(double* energyDensity) const;
+  std::vector<Block>& blocks() { return blocks_; }
+
+ private:
+  const Topology& topology_;
+  FieldManager& fields_;
+  std::vector<Block>& blocks_;
+  std::string influenceFunction_;
+  Timers& timers_;
+  ModelState state_;
+  double* bondDamage_ = nullptr;
+  std::vector<std::string> syncAfterPrecompute_;
+};
+
+}  // namespace peridot

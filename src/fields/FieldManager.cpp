@@ -1,0 +1,74 @@
+#include "fields/FieldManager.hpp"
+
+#include <stdexcept>
+
+namespace peridot {
+
+FieldManager::FieldManager(const Topology& topology) : topology_(topology) {}
+
+double* FieldManager::node(const std::string& name, int components) {
+  auto it = nodeFields_.find(name);
+  if (it != nodeFields_.end()) {
+    if (it->second.components != components) {
+      throw std::logic_error("field " + name + " requested with " + std::to_string(components) +
+                             " components but it has " + std::to_string(it->second.components));
+    }
+    return it->second.data;
+  }
+  NodeField f;
+  f.name = name;
+  f.components = components;
+  const int n = topology_.numOverlap * components;
+  // The overlap vector's map only sizes the storage; communication uses the owned/ghost views.
+  auto teuchosComm = topology_.ownedMap->getComm();
+  auto storageMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                         static_cast<size_t>(n), 0, teuchosComm));
+  f.overlap = Teuchos::rcp(new Vector(storageMap, true));
+  const auto& owned = components == 1 ? topology_.ownedMap : topology_.ownedMap3;
+  const auto& ghost = components == 1 ? topology_.ghostMap : topology_.ghostMap3;
+  f.ownedView = f.overlap->offsetViewNonConst(owned, 0)->getVectorNonConst(0);
+  f.ghostView = f.overlap->offsetViewNonConst(ghost, static_cast<size_t>(topology_.numOwned) *
+                                                         components)
+                    ->getVectorNonConst(0);
+  f.data = f.overlap->getDataNonConst().getRawPtr();
+  return nodeFields_.emplace(name, std::move(f)).first->second.data;
+}
+
+const NodeField& FieldManager::nodeField(const std::string& name) const {
+  auto it = nodeFields_.find(name);
+  if (it == nodeFields_.end()) throw std::logic_error("no node field " + name);
+  return it->second;
+}
+
+void FieldManager::refreshGhosts(const std::string& name) {
+  auto it = nodeFields_.find(name);
+  if (it == nodeFields_.end()) throw std::logic_error("no node field " + name);
+  NodeField& f = it->second;
+  if (topology_.numRanks == 1) return;
+  const auto& importer = f.components == 1 ? topology_.ghostImport : topology_.ghostImport3;
+  f.ghostView->doImport(*f.ownedView, *importer, Tpetra::INSERT);
+}
+
+std::vector<double>& FieldManager::bond(const std::string& name, double initial) {
+  auto it = bondFields_.find(name);
+  if (it != bondFields_.end()) return it->second;
+  return bondFields_
+      .emplace(name, std::vector<double>(static_cast<std::size_t>(topology_.numBonds()), initial))
+      .first->second;
+}
+
+std::size_t FieldManager::bytesAllocated() const {
+  std::size_t bytes = 0;
+  for (const auto& kv : nodeFields_)
+    bytes += sizeof(double) * kv.second.components * topology_.numOverlap;
+  for (const auto& kv : bondFields_) bytes += sizeof(double) * kv.second.size();
+  return bytes;
+}
+
+std::vector<std::string> FieldManager::nodeFieldNames() const {
+  std::vector<std::string> names;
+  for (const auto& kv : nodeFields_) names.push_back(kv.first);
+  return names;
+}
+
+}  // namespace peridot

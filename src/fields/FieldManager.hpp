@@ -1,0 +1,55 @@
+#pragma once
+// Registry of named fields. Node fields are Tpetra vectors on the overlap map (owned points
+// first, then ghosts) with 1 or 3 components interleaved per point; bond fields are flat arrays
+// aligned with the CSR bond lists; global fields are named scalars. Nothing is allocated until
+// a model, a boundary condition or an output asks for it by name.
+#include <Tpetra_Vector.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+using Vector = Tpetra::Vector<double, LocalOrdinal, GlobalOrdinal>;
+
+struct NodeField {
+  std::string name;
+  int components = 1;
+  Teuchos::RCP<Vector> overlap;      // owns the storage
+  Teuchos::RCP<Vector> ownedView;    // view of the owned prefix
+  Teuchos::RCP<Vector> ghostView;    // view of the ghost tail
+  double* data = nullptr;            // components * numOverlap values
+};
+
+class FieldManager {
+ public:
+  explicit FieldManager(const Topology& topology);
+
+  // Returns the field's storage, allocating it (zeroed) on first request.
+  double* node(const std::string& name, int components);
+  bool hasNode(const std::string& name) const { return nodeFields_.count(name) > 0; }
+  const NodeField& nodeField(const std::string& name) const;
+  // Copies owned values to the ghost copies on other ranks.
+  void refreshGhosts(const std::string& name);
+
+  // One value per one-sided bond entry, allocated on first request with `initial`.
+  std::vector<double>& bond(const std::string& name, double initial = 0.0);
+  bool hasBond(const std::string& name) const { return bondFields_.count(name) > 0; }
+
+  double& global(const std::string& name) { return globals_[name]; }
+
+  std::size_t bytesAllocated() const;
+  std::vector<std::string> nodeFieldNames() const;
+
+ private:
+  const Topology& topology_;
+  std::map<std::string, NodeField> nodeFields_;
+  std::map<std::string, std::vector<double>> bondFields_;
+  std::map<std::string, double> globals_;
+};
+
+}  // namespace peridot

@@ -1,0 +1,92 @@
+#include "materials/MaterialModel.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
+  const std::string model = params.string("Material Model");
+  const auto* entry = MaterialRegistry::find(model);
+  if (!entry) {
+    std::string known;
+    for (const auto& n : MaterialRegistry::names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
+    throw InputError(params.pathOf("Material Model"),
+                     "unknown material model \"" + model + "\"; Peridot knows " + known);
+  }
+  if (params.has("Horizon")) {
+    throw InputError(params.pathOf("Horizon"),
+                     "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
+  }
+  auto material = entry->create(params);
+  params.finish();
+  return material;
+}
+
+ElasticConstants readTwoElasticConstants(ListReader& p) {
+  const char* keys[4] = {"Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio"};
+  int count = 0;
+  for (const char* k : keys) count += p.has(k) ? 1 : 0;
+  if (count != 2) {
+    throw InputError(p.path(), "exactly two of \"Bulk Modulus\", \"Shear Modulus\", \"Young's "
+                               "Modulus\" and \"Poisson's Ratio\" are required, got " +
+                                   std::to_string(count));
+  }
+  ElasticConstants c;
+  const bool hasK = p.has("Bulk Modulus"), hasG = p.has("Shear Modulus"),
+             hasE = p.has("Young's Modulus"), hasNu = p.has("Poisson's Ratio");
+  double K = hasK ? p.positiveNumber("Bulk Modulus") : 0;
+  double G = hasG ? p.positiveNumber("Shear Modulus") : 0;
+  double E = hasE ? p.positiveNumber("Young's Modulus") : 0;
+  double nu = hasNu ? p.number("Poisson's Ratio") : 0;
+  if (hasNu && !(nu > -1.0 && nu < 0.5)) {
+    throw InputError(p.pathOf("Poisson's Ratio"),
+                     "expected a number in (-1, 0.5), got " + std::to_string(nu));
+  }
+  if (hasK && hasG) {
+    E = 9 * K * G / (3 * K + G);
+    nu = (3 * K - 2 * G) / (2 * (3 * K + G));
+  } else if (hasE && hasNu) {
+    K = E / (3 * (1 - 2 * nu));
+    G = E / (2 * (1 + nu));
+  } else if (hasK && hasE) {
+    if (!(E < 9 * K)) throw InputError(p.path(), "Young's Modulus must be less than 9 x Bulk Modulus");
+    G = 3 * K * E / (9 * K - E);
+    nu = (3 * K - E) / (6 * K);
+  } else if (hasK && hasNu) {
+    E = 3 * K * (1 - 2 * nu);
+    G = E / (2 * (1 + nu));
+  } else if (hasG && hasE) {
+    nu = E / (2 * G) - 1;
+    if (!(nu > -1.0 && nu < 0.5)) throw InputError(p.path(), "these moduli give a Poisson's ratio outside (-1, 0.5)");
+    K = E / (3 * (1 - 2 * nu));
+  } else {  // G and nu
+    E = 2 * G * (1 + nu);
+    K = E / (3 * (1 - 2 * nu));
+  }
+  c.bulkModulus = K;
+  c.shearModulus = G;
+  c.youngsModulus = E;
+  c.poissonsRatio = nu;
+  return c;
+}
+
+void acceptCommonMaterialKeys(ListReader& p) {
+  p.positiveNumber("Finite Difference Probe Length", 1.0);
+  p.boolean("Verbose", false);
+  // Peridigm's implicit-solver options do not change explicit dynamics.
+  p.boolean("Apply Automatic Differentiation Jacobian", true);
+  if (p.has("Apply Shear Correction Factor") && p.boolean("Apply Shear Correction Factor", false)) {
+    throw InputError(p.pathOf("Apply Shear Correction Factor"), "true is not supported by Peridot yet");
+  }
+  if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
+    throw InputError(p.pathOf("Thermal Expansion Coefficient"),
+                     "thermal strains are not supported by Peridot yet");
+  }
+  if (p.has("Compute Partial Stress") && p.boolean("Compute Partial Stress", false)) {
+    throw InputError(p.pathOf("Compute Partial Stress"), "not supported by Peridot yet");
+  }
+}
+
+}  // namespace peridot

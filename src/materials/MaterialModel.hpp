@@ -1,0 +1,75 @@
+#pragma once
+// Interface of a material model. The evaluator calls it once per block per step with the
+// block's owned points; the bond loops inside run on raw CSR arrays.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Registry.hpp"
+#include "fields/FieldManager.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+// Everything a kernel reads or writes, as raw arrays (overlap-indexed unless noted).
+struct ModelState {
+  const Topology* topology = nullptr;
+  FieldManager* fields = nullptr;
+  const double* x = nullptr;           // reference coordinates, 3 per point
+  const double* y = nullptr;           // current coordinates, 3 per point
+  const double* volume = nullptr;      // per point
+  const double* horizon = nullptr;     // per point
+  double* forceDensity = nullptr;      // 3 per point; kernels write owned points only
+  const double* bondDamage = nullptr;  // per bond entry; null when no damage model
+  const double* influence = nullptr;   // per bond entry; null means omega = 1
+  double dt = 0.0;
+};
+
+class MaterialModel {
+ public:
+  virtual ~MaterialModel() = default;
+  virtual double density() const = 0;
+  // The bulk modulus used by the stable time step estimate (Peridigm's convention).
+  virtual double bulkModulus() const = 0;
+  // Allocates the fields the model needs (called once, before initialize).
+  virtual void declareFields(FieldManager&) {}
+  // Called for every block using the model after all blocks declared their fields; may fill
+  // per-point constants that neighbouring points read (they are ghosted afterwards).
+  virtual void initialize(const ModelState&, const std::vector<int>& points) = 0;
+  // Fields the evaluator must ghost after initialize / after precompute.
+  virtual std::vector<std::string> fieldsToSyncAfterInitialize() const { return {}; }
+  virtual std::vector<std::string> fieldsToSyncAfterPrecompute() const { return {}; }
+  virtual void precompute(const ModelState&, const std::vector<int>&) {}
+  virtual void computeForce(const ModelState& state, const std::vector<int>& points) = 0;
+  // Stored elastic energy density (per unit volume) of each point in `points`.
+  virtual void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
+                                   double* energyDensity) const = 0;
+  // Node fields the model maintains that a user may output (e.g. "Dilatation").
+  virtual std::vector<std::string> outputFields() const { return {}; }
+  // A tag shared by models whose points may be bonded to each other.
+  virtual std::string family() const = 0;
+};
+
+using MaterialRegistry = Registry<MaterialModel>;
+
+// Creates the model named by `Material Model` and validates all of its parameters.
+std::unique_ptr<MaterialModel> createMaterial(ListReader& params);
+
+// Elastic constants from "exactly two of" Bulk Modulus, Shear Modulus, Young's Modulus,
+// Poisson's Ratio (as Peridigm reads them). Marks the keys as read.
+struct ElasticConstants {
+  double bulkModulus = 0, shearModulus = 0, youngsModulus = 0, poissonsRatio = 0;
+};
+ElasticConstants readTwoElasticConstants(ListReader& params);
+
+// Keys every material accepts and ignores or checks (Peridigm compatibility).
+void acceptCommonMaterialKeys(ListReader& params);
+
+}  // namespace peridot
+
+#define PERIDOT_REGISTER_MATERIAL(DeckName, Class, Summary, Params)                       \
+  namespace {                                                                              \
+  const bool kRegistered##Class = ::peridot::MaterialRegistry::add(                        \
+      DeckName, [](::peridot::ListReader& p) { return std::make_unique<Class>(p); }, Summary, \
+      Params);                                                                             \
+  }

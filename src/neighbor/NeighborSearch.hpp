@@ -1,0 +1,29 @@
+#pragma once
+// Cell-list neighbour search: O(N) in the number of candidate points for a bounded horizon.
+#include <cstddef>
+#include <vector>
+
+#include "discretization/Discretization.hpp"
+
+namespace peridot {
+
+struct NeighborSearchInput {
+  const double* x = nullptr;        // 3 per candidate point
+  std::size_t numPoints = 0;        // candidates
+  const double* horizon = nullptr;  // per candidate point; a query uses its own
+  const int* blockId = nullptr;     // per candidate; only read when omitting inter-block bonds
+  bool omitBondsBetweenBlocks = false;
+  NeighborhoodRule rule;
+  const std::vector<BondFilter>* bondFilters = nullptr;
+};
+
+// For each query (an index into the candidates), appends the indices of its neighbours (self
+// excluded) to `neighbors`; offsets has queries.size()+1 entries. Neighbours come in no
+// particular order.
+void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
+                   std::vector<long long>& offsets, std::vector<std::size_t>& neighbors);
+
+// The reach of a query point: the largest |xi| any neighbour of it can have.
+double searchReach(const NeighborhoodRule& rule, double horizon);
+
+}  // namespace peridot

@@ -1,0 +1,174 @@
+#include "output/OutputManager.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
+                             const std::map<std::string, std::vector<long long>>& nodeSets,
+                             const Topology& topology, VariableSource& source, Timers& timers)
+    : topology_(topology), source_(source), timers_(timers) {
+  // Group the streams into files.
+  for (const auto& out : config.outputs) {
+    if (out.frequency == -1 || out.variables.empty()) continue;
+    bool onlyGlobal = true;
+    for (const auto& v : out.variables) onlyGlobal = onlyGlobal && source.components(v) == 0;
+    const std::string path = out.fileName + (onlyGlobal ? ".h" : ".e");
+    auto it = std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
+    if (it == files_.end()) {
+      files_.push_back(File{path, {}, {}, nullptr});
+      it = files_.end() - 1;
+    }
+    for (const auto& v : out.variables)
+      if (std::find(it->variables.begin(), it->variables.end(), v) == it->variables.end())
+        it->variables.push_back(v);
+    it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
+  }
+  numPoints_ = static_cast<long long>(cloud.size());
+
+  // Output order: blocks by id, points by id within a block.
+  std::vector<std::size_t> order(cloud.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return cloud.blockId[a] != cloud.blockId[b] ? cloud.blockId[a] < cloud.blockId[b]
+                                                : cloud.globalId[a] < cloud.globalId[b];
+  });
+  int size = topology.numRanks;
+  gatherCounts_.assign(size, 0);
+  gatherDispls_.assign(size, 0);
+  int numOwned = topology.numOwned;
+  MPI_Gather(&numOwned, 1, MPI_INT, gatherCounts_.data(), 1, MPI_INT, 0, topology.comm);
+  for (int r = 1; r < size; ++r) gatherDispls_[r] = gatherDispls_[r - 1] + gatherCounts_[r - 1];
+  std::vector<long long> ownedIds(topology.overlapGlobalId.begin(),
+                                  topology.overlapGlobalId.begin() + topology.numOwned);
+  std::vector<long long> allIds(topology.rank == 0 ? static_cast<std::size_t>(numPoints_) : 0);
+  MPI_Gatherv(ownedIds.data(), numOwned, MPI_LONG_LONG, allIds.data(), gatherCounts_.data(),
+              gatherDispls_.data(), MPI_LONG_LONG, 0, topology.comm);
+  if (topology.rank != 0) return;
+
+  std::map<long long, long long> positionOfId;
+  for (std::size_t p = 0; p < order.size(); ++p)
+    positionOfId[cloud.globalId[order[p]]] = static_cast<long long>(p);
+  positionOfReceived_.resize(allIds.size());
+  for (std::size_t k = 0; k < allIds.size(); ++k) positionOfReceived_[k] = positionOfId.at(allIds[k]);
+
+  ExodusLayout layout;
+  for (std::size_t p : order) {
+    layout.ids.push_back(cloud.globalId[p] + 1);
+    layout.x.push_back(cloud.x[3 * p]);
+    layout.y.push_back(cloud.x[3 * p + 1]);
+    layout.z.push_back(cloud.x[3 * p + 2]);
+    if (layout.blockIds.empty() || layout.blockIds.back() != cloud.blockId[p]) {
+      layout.blockIds.push_back(cloud.blockId[p]);
+      layout.blockNames.push_back(cloud.blockNames.at(cloud.blockId[p]));
+      layout.blockCounts.push_back(0);
+    }
+    ++layout.blockCounts.back();
+  }
+  for (const auto& kv : nodeSets) {
+    ExodusLayout::Set s;
+    s.name = kv.first;
+    for (long long g : kv.second) s.positions.push_back(static_cast<int>(positionOfId.at(g)));
+    std::sort(s.positions.begin(), s.positions.end());
+    layout.nodeSets.push_back(s);
+  }
+  for (auto& f : files_) {
+    std::vector<std::string> nodal, element, global;
+    for (const auto& v : f.variables) {
+      const int c = source.components(v);
+      if (c == 3) {
+        for (const char* axis : {"X", "Y", "Z"}) nodal.push_back(v + axis);
+      } else if (c == 1) {
+        element.push_back(v);
+      } else {
+        if (source.globalSize(v) == 3) {
+          for (const char* axis : {"X", "Y", "Z"}) global.push_back(v + axis);
+        } else {
+          global.push_back(v);
+        }
+      }
+    }
+    f.writer = std::make_unique<ExodusWriter>(f.path, layout, nodal, element, global);
+  }
+}
+
+OutputManager::~OutputManager() = default;
+
+std::vector<std::string> OutputManager::fileNames() const {
+  std::vector<std::string> names;
+  for (const auto& f : files_) names.push_back(f.path);
+  return names;
+}
+
+bool OutputManager::fires(const File& f, long long step) const {
+  if (step == 0) return true;
+  for (const auto& t : f.triggers) {
+    if (step < t.initialStep) continue;
+    if (t.finalStep >= 0 && step > t.finalStep) continue;
+    if (step % t.frequency == 0) return true;
+  }
+  return false;
+}
+
+bool OutputManager::due(long long step) const {
+  for (const auto& f : files_)
+    if (fires(f, step)) return true;
+  return false;
+}
+
+void OutputManager::gather(const std::vector<double>& owned, int components, std::vector<double>& out) {
+  std::vector<int> counts(gatherCounts_), displs(gatherDispls_);
+  for (auto& c : counts) c *= components;
+  for (auto& d : displs) d *= components;
+  std::vector<double> received(topology_.rank == 0 ? static_cast<std::size_t>(numPoints_ * components) : 0);
+  MPI_Gatherv(owned.data(), topology_.numOwned * components, MPI_DOUBLE, received.data(),
+              counts.data(), displs.data(), MPI_DOUBLE, 0, topology_.comm);
+  if (topology_.rank != 0) return;
+  out.assign(static_cast<std::size_t>(numPoints_ * components), 0.0);
+  for (std::size_t k = 0; k < positionOfReceived_.size(); ++k)
+    for (int c = 0; c < components; ++c)
+      out[positionOfReceived_[k] * components + c] = received[k * components + c];
+}
+
+void OutputManager::write(long long step, double time) {
+  Timers::Scope timer(timers_, "Output");
+  std::map<std::string, std::vector<double>> cache;  // gathered values by variable
+  for (auto& f : files_) {
+    if (!fires(f, step)) continue;
+    std::vector<std::vector<double>> nodal, element;
+    std::vector<double> globals;
+    for (const auto& v : f.variables) {
+      const int c = source_.components(v);
+      if (c == 0) {
+        std::vector<double> g;
+        source_.globalVariable(v, g);
+        globals.insert(globals.end(), g.begin(), g.end());
+        continue;
+      }
+      auto it = cache.find(v);
+      if (it == cache.end()) {
+        std::vector<double> owned, all;
+        source_.nodeVariable(v, owned);
+        gather(owned, c, all);
+        it = cache.emplace(v, std::move(all)).first;
+      }
+      if (topology_.rank != 0) continue;
+      const std::vector<double>& all = it->second;
+      if (c == 3) {
+        for (int d = 0; d < 3; ++d) {
+          std::vector<double> comp(static_cast<std::size_t>(numPoints_));
+          for (long long p = 0; p < numPoints_; ++p) comp[p] = all[3 * p + d];
+          nodal.push_back(std::move(comp));
+        }
+      } else {
+        element.push_back(all);
+      }
+    }
+    if (topology_.rank == 0) f.writer->writeRecord(time, nodal, element, globals);
+  }
+}
+
+}  // namespace peridot

@@ -1,0 +1,54 @@
+#pragma once
+// Who owns which point, which points each rank sees as ghosts, and the bonds of every owned
+// point as CSR lists in local overlap indices. Built once from the replicated point cloud.
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "discretization/Discretization.hpp"
+#include "discretization/PointCloud.hpp"
+
+namespace peridot {
+
+using LocalOrdinal = int;
+using GlobalOrdinal = long long;
+using Map = Tpetra::Map<LocalOrdinal, GlobalOrdinal>;
+using Import = Tpetra::Import<LocalOrdinal, GlobalOrdinal>;
+
+struct Topology {
+  MPI_Comm comm = MPI_COMM_WORLD;
+  int rank = 0, numRanks = 1;
+  int numOwned = 0;    // local indices [0, numOwned) are owned, in space-filling-curve order
+  int numOverlap = 0;  // owned followed by ghosts (ghosts sorted by global id)
+  long long globalNumPoints = 0;
+  long long globalNumBonds = 0;                // one-sided bond entries, all ranks
+  std::vector<GlobalOrdinal> overlapGlobalId;  // per overlap index
+  std::vector<std::size_t> overlapCloudIndex;  // per overlap index, index into the PointCloud
+  std::vector<std::int64_t> bondOffsets;       // numOwned + 1
+  std::vector<int> neighbors;                  // overlap indices, each list sorted by global id
+
+  // Tpetra maps: scalar maps (one entry per point) and vector maps (3 per point: 3*gid + d).
+  Teuchos::RCP<const Map> ownedMap, overlapMap, ghostMap;
+  Teuchos::RCP<const Map> ownedMap3, ghostMap3;
+  Teuchos::RCP<const Import> ghostImport, ghostImport3;
+
+  int numNeighbors(int i) const { return static_cast<int>(bondOffsets[i + 1] - bondOffsets[i]); }
+  std::int64_t numBonds() const { return bondOffsets.empty() ? 0 : bondOffsets.back(); }
+};
+
+struct TopologyOptions {
+  NeighborhoodRule rule;
+  const std::vector<BondFilter>* bondFilters = nullptr;
+  bool omitBondsBetweenBlocks = false;
+  bool weightByBondCount = true;  // second Zoltan pass weighted by bonds per point
+};
+
+// `horizon` has one value per cloud point.
+Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
+                       const TopologyOptions& options, MPI_Comm comm);
+
+}  // namespace peridot

@@ -1,0 +1,580 @@
+// Element geometry and the Exodus mesh reader.
+#include <exodusII.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "discretization/ElementGeometry.hpp"
+#include "discretization/ExodusMeshReader.hpp"
+#include "output/ExodusCompare.hpp"
+
+#ifndef PERIDOT_SHARED_DIR
+#define PERIDOT_SHARED_DIR "../shared"
+#endif
+
+namespace {
+
+using peridot::InputError;
+
+const std::string kCases = std::string(PERIDOT_SHARED_DIR) + "/peridigm-cases";
+const char* const kDeckPath = "Discretization -> Input Mesh File";
+
+// Reference corners of the unit cube [0,1]^3 in Exodus HEX8 order.
+constexpr double kUnitCube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+
+std::string tempPath(const std::string& stem) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = std::string("peridot_") + info->test_suite_name() + "_" + info->name() +
+                           "_" + std::to_string(::getpid()) + "_" + stem;
+  return (std::filesystem::temp_directory_path() / name).string();
+}
+
+// Removes a file at the end of a test.
+struct TempFile {
+  explicit TempFile(std::string p) : path(std::move(p)) {}
+  ~TempFile() {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+  }
+  std::string path;
+};
+
+// Expects f() to throw InputError whose message contains every one of parts.
+template <class F>
+void expectInputError(F f, const std::vector<std::string>& parts) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError thrown";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const auto& part : parts) {
+      EXPECT_NE(message.find(part), std::string::npos)
+          << "message \"" << message << "\" lacks \"" << part << "\"";
+    }
+  }
+}
+
+// ---- a small Exodus mesh writer for the tests ----
+
+struct TestBlock {
+  int64_t id = 1;
+  std::string type = "HEX8";
+  int64_t nodesPerElement = 8;
+  int64_t numAttributes = 0;
+  std::vector<int64_t> connectivity;  // 1-based
+  std::vector<double> attributes;     // numAttributes per element
+  std::string name;                   // empty: unnamed
+  int64_t size() const { return static_cast<int64_t>(connectivity.size()) / nodesPerElement; }
+};
+
+struct TestNodeSet {
+  int64_t id = 1;
+  std::string name;
+  std::vector<int64_t> nodes;
+};
+
+struct TestMesh {
+  int dimension = 3;
+  std::vector<double> x, y, z;
+  std::vector<TestBlock> blocks;
+  std::vector<int64_t> elementIds;  // empty: no element number map
+  std::vector<TestNodeSet> nodeSets;
+};
+
+void writeMesh(const std::string& path, const TestMesh& mesh) {
+  int cpuWordSize = sizeof(double);
+  int ioWordSize = sizeof(double);
+  const int exoid = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
+  ASSERT_GE(exoid, 0);
+  ex_set_int64_status(exoid, EX_ALL_INT64_API);
+  int64_t numElements = 0;
+  for (const auto& b : mesh.blocks) numElements += b.size();
+  ASSERT_GE(
+      ex_put_init(exoid, "peridot test mesh", mesh.dimension, static_cast<int64_t>(mesh.x.size()),
+                  numElements, static_cast<int64_t>(mesh.blocks.size()),
+                  static_cast<int64_t>(mesh.nodeSets.size()), 0),
+      0);
+  ASSERT_GE(ex_put_coord(exoid, mesh.x.data(), mesh.y.data(),
+                         mesh.dimension > 2 ? mesh.z.data() : nullptr),
+            0);
+  for (const auto& b : mesh.blocks) {
+    ASSERT_GE(ex_put_block(exoid, EX_ELEM_BLOCK, b.id, b.type.c_str(), b.size(), b.nodesPerElement,
+                           0, 0, b.numAttributes),
+              0);
+    if (b.size() > 0) {
+      ASSERT_GE(ex_put_conn(exoid, EX_ELEM_BLOCK, b.id, b.connectivity.data(), nullptr, nullptr),
+                0);
+    }
+    if (b.numAttributes > 0) {
+      ASSERT_GE(ex_put_attr(exoid, EX_ELEM_BLOCK, b.id, b.attributes.data()), 0);
+    }
+    if (!b.name.empty()) {
+      ASSERT_GE(ex_put_name(exoid, EX_ELEM_BLOCK, b.id, b.name.c_str()), 0);
+    }
+  }
+  if (!mesh.elementIds.empty()) {
+    ASSERT_GE(ex_put_id_map(exoid, EX_ELEM_MAP, mesh.elementIds.data()), 0);
+  }
+  for (const auto& s : mesh.nodeSets) {
+    ASSERT_GE(ex_put_set_param(exoid, EX_NODE_SET, s.id, static_cast<int64_t>(s.nodes.size()), 0),
+              0);
+    ASSERT_GE(ex_put_set(exoid, EX_NODE_SET, s.id, s.nodes.data(), nullptr), 0);
+    if (!s.name.empty()) {
+      ASSERT_GE(ex_put_name(exoid, EX_NODE_SET, s.id, s.name.c_str()), 0);
+    }
+  }
+  ASSERT_EQ(ex_close(exoid), 0);
+}
+
+void addNode(TestMesh& mesh, double x, double y, double z) {
+  mesh.x.push_back(x);
+  mesh.y.push_back(y);
+  mesh.z.push_back(z);
+}
+
+// ---- independent reference for the trilinear hex: Simpson's rule in each reference direction
+// (exact for polynomials of degree 3, which detJ and x*detJ are), with the Jacobian from central
+// differences of the map (exact, the map being linear in each reference coordinate).
+
+void trilinearMap(const double nodes[8][3], double u, double v, double w, double x[3]) {
+  // (u, v, w) in [0,1]^3; corner a sits at kUnitCube[a].
+  for (int k = 0; k < 3; ++k) x[k] = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const double s = (kUnitCube[a][0] ? u : 1 - u) * (kUnitCube[a][1] ? v : 1 - v) *
+                     (kUnitCube[a][2] ? w : 1 - w);
+    for (int k = 0; k < 3; ++k) x[k] += s * nodes[a][k];
+  }
+}
+
+double referenceHex(const double nodes[8][3], double centroid[3]) {
+  const int n = 4;  // Simpson intervals per direction
+  const double h = 1.0 / n;
+  const double eps = 0.25;
+  double volume = 0.0;
+  double moment[3] = {0, 0, 0};
+  const auto weight = [&](int i) { return (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0); };
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      for (int k = 0; k <= n; ++k) {
+        const double p[3] = {i * h, j * h, k * h};
+        double J[3][3];
+        for (int d = 0; d < 3; ++d) {
+          double plus[3] = {p[0], p[1], p[2]};
+          double minus[3] = {p[0], p[1], p[2]};
+          plus[d] += eps;
+          minus[d] -= eps;
+          double xp[3], xm[3];
+          trilinearMap(nodes, plus[0], plus[1], plus[2], xp);
+          trilinearMap(nodes, minus[0], minus[1], minus[2], xm);
+          for (int c = 0; c < 3; ++c) J[c][d] = (xp[c] - xm[c]) / (2 * eps);
+        }
+        const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                           J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        const double wgt = weight(i) * weight(j) * weight(k) * (h / 3) * (h / 3) * (h / 3);
+        double x[3];
+        trilinearMap(nodes, p[0], p[1], p[2], x);
+        volume += wgt * det;
+        for (int c = 0; c < 3; ++c) moment[c] += wgt * det * x[c];
+      }
+    }
+  }
+  for (int c = 0; c < 3; ++c) centroid[c] = moment[c] / volume;
+  return volume;
+}
+
+// ---- ElementGeometry ----
+
+TEST(ElementGeometry, AffineHexVolumeIsDeterminant) {
+  const double A[3][3] = {{2.0, 0.3, 0.1}, {0.2, 1.5, -0.4}, {0.1, 0.25, 0.8}};
+  const double b[3] = {1.0, -2.0, 0.5};
+  double nodes[8][3];
+  for (int a = 0; a < 8; ++a) {
+    for (int i = 0; i < 3; ++i) {
+      nodes[a][i] = b[i];
+      for (int j = 0; j < 3; ++j) nodes[a][i] += A[i][j] * kUnitCube[a][j];
+    }
+  }
+  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                     A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+  ASSERT_GT(det, 0.0);
+  EXPECT_NEAR(peridot::hexVolume(nodes), det, 1e-14);
+  double average[3], centroid[3];
+  peridot::hexNodeAverage(nodes, average);
+  EXPECT_NEAR(peridot::hexCentroid(nodes, centroid), det, 1e-14);
+  for (int i = 0; i < 3; ++i) {
+    const double expected = b[i] + 0.5 * (A[i][0] + A[i][1] + A[i][2]);
+    EXPECT_NEAR(average[i], expected, 1e-14);
+    EXPECT_NEAR(centroid[i], expected, 1e-14);  // affine: centroid = node average
+  }
+}
+
+TEST(ElementGeometry, FrustumHexVolumeAndCentroid) {
+  // Square frustum: base [0,2]^2 at z=0, top [0.5,1.5]^2 at z=1. Planar faces, non-affine map.
+  // V = h/3 (A1 + A2 + sqrt(A1 A2)) = 7/3; centroid height h (A1 + 2 sqrt(A1 A2) + 3 A2) /
+  // (4 (A1 + sqrt(A1 A2) + A2)) = 11/28.
+  const double nodes[8][3] = {{0, 0, 0},       {2, 0, 0},       {2, 2, 0},       {0, 2, 0},
+                              {0.5, 0.5, 1.0}, {1.5, 0.5, 1.0}, {1.5, 1.5, 1.0}, {0.5, 1.5, 1.0}};
+  EXPECT_NEAR(peridot::hexVolume(nodes), 7.0 / 3.0, 1e-14);
+  double centroid[3], average[3];
+  EXPECT_NEAR(peridot::hexCentroid(nodes, centroid), 7.0 / 3.0, 1e-14);
+  EXPECT_NEAR(centroid[0], 1.0, 1e-14);
+  EXPECT_NEAR(centroid[1], 1.0, 1e-14);
+  EXPECT_NEAR(centroid[2], 11.0 / 28.0, 1e-14);
+  peridot::hexNodeAverage(nodes, average);  // what the reader (and Peridigm) use
+  EXPECT_DOUBLE_EQ(average[0], 1.0);
+  EXPECT_DOUBLE_EQ(average[1], 1.0);
+  EXPECT_DOUBLE_EQ(average[2], 0.5);
+}
+
+TEST(ElementGeometry, DistortedHexMatchesIndependentIntegration) {
+  // A hex with one node pulled out and warped (non-planar) faces.
+  double nodes[8][3];
+  std::copy(&kUnitCube[0][0], &kUnitCube[0][0] + 24, &nodes[0][0]);
+  nodes[6][0] = 1.6;
+  nodes[6][1] = 1.3;
+  nodes[6][2] = 1.45;
+  nodes[1][2] = 0.2;
+  nodes[3][0] = -0.15;
+  nodes[4][1] = 0.1;
+  double expectedCentroid[3];
+  const double expected = referenceHex(nodes, expectedCentroid);
+  double centroid[3], average[3];
+  EXPECT_NEAR(peridot::hexVolume(nodes), expected, 1e-13);
+  EXPECT_NEAR(peridot::hexCentroid(nodes, centroid), expected, 1e-13);
+  peridot::hexNodeAverage(nodes, average);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(centroid[k], expectedCentroid[k], 1e-13);
+    double sum = 0.0;
+    for (int a = 0; a < 8; ++a) sum += nodes[a][k];
+    EXPECT_DOUBLE_EQ(average[k], sum / 8.0);
+  }
+  // A unit cube with only node 7 moved out along the diagonal.
+  double moved[8][3];
+  std::copy(&kUnitCube[0][0], &kUnitCube[0][0] + 24, &moved[0][0]);
+  moved[6][0] = moved[6][1] = moved[6][2] = 1.5;
+  double c[3];
+  EXPECT_NEAR(peridot::hexVolume(moved), referenceHex(moved, c), 1e-13);
+}
+
+TEST(ElementGeometry, MirroredHexHasNegativeVolume) {
+  double nodes[8][3];
+  for (int a = 0; a < 8; ++a) {
+    for (int k = 0; k < 3; ++k) nodes[a][k] = kUnitCube[(a + 4) % 8][k];  // top face first
+  }
+  EXPECT_NEAR(peridot::hexVolume(nodes), -1.0, 1e-14);
+}
+
+TEST(ElementGeometry, TetVolumeAndCentroid) {
+  const double tet[4][3] = {{1, 1, 1}, {3, 1, 1}, {1, 4, 1}, {1, 1, 5}};
+  EXPECT_NEAR(peridot::tetVolume(tet), 2.0 * 3.0 * 4.0 / 6.0, 1e-14);
+  const double flipped[4][3] = {{1, 1, 1}, {1, 4, 1}, {3, 1, 1}, {1, 1, 5}};
+  EXPECT_NEAR(peridot::tetVolume(flipped), 4.0, 1e-14);
+  double c[3];
+  peridot::tetCentroid(tet, c);
+  EXPECT_DOUBLE_EQ(c[0], 1.5);
+  EXPECT_DOUBLE_EQ(c[1], 1.75);
+  EXPECT_DOUBLE_EQ(c[2], 2.0);
+  const double flat[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  EXPECT_EQ(peridot::tetVolume(flat), 0.0);
+}
+
+// ---- reading the shipped meshes ----
+
+TEST(ExodusMeshReader, ReadsWaveInBar) {
+  const auto cloud = peridot::readExodusMesh(kCases + "/WaveInBar/WaveInBar.g", kDeckPath);
+  ASSERT_EQ(cloud.size(), 525u);
+  EXPECT_EQ(cloud.dimension, 3);
+  EXPECT_EQ(cloud.x.size(), 3 * 525u);
+  EXPECT_EQ(cloud.blockId.size(), 525u);
+  ASSERT_EQ(cloud.blockNames.size(), 1u);
+  EXPECT_EQ(cloud.blockNames.at(1), "block_1");
+  for (int b : cloud.blockId) EXPECT_EQ(b, 1);
+  // No element number map in the file: ids 1..525 in file order.
+  for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_EQ(cloud.globalId[i], (long long)i);
+  // The bar is the box [-0.021,0.021] x [-0.005,0.005]^2 filled with hexes.
+  const double total = std::accumulate(cloud.volume.begin(), cloud.volume.end(), 0.0);
+  EXPECT_NEAR(total, 0.042 * 0.01 * 0.01, 1e-12 * 4.2e-6 * 525);
+  for (double v : cloud.volume) EXPECT_GT(v, 0.0);
+  ASSERT_EQ(cloud.pointSets.size(), 1u);
+  EXPECT_EQ(cloud.pointSets[0].name, "nodelist_1");
+  const auto& ids = cloud.pointSets[0].globalIds;
+  EXPECT_FALSE(ids.empty());
+  EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
+  EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end());
+  for (long long id : ids) {
+    EXPECT_GE(id, 0);
+    EXPECT_LT(id, 525);
+  }
+}
+
+// The points are where Peridigm put them: compare with the gold output's sphere nodes by id.
+void expectPositionsMatchGold(const std::string& mesh, const std::string& gold) {
+  const auto cloud = peridot::readExodusMesh(mesh, kDeckPath);
+  const auto results = peridot::readExodusResults(gold);
+  ASSERT_EQ(results.nodeIds.size(), cloud.size());
+  std::vector<long long> index(cloud.size() + 1, -1);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    ASSERT_LT(cloud.globalId[i], (long long)cloud.size());
+    index[static_cast<std::size_t>(cloud.globalId[i])] = static_cast<long long>(i);
+  }
+  for (std::size_t n = 0; n < results.nodeIds.size(); ++n) {
+    const long long p = index[static_cast<std::size_t>(results.nodeIds[n] - 1)];
+    ASSERT_GE(p, 0);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(cloud.x[3 * static_cast<std::size_t>(p) + k], results.nodeCoordinates[3 * n + k],
+                  1e-12)
+          << "node id " << results.nodeIds[n];
+    }
+  }
+}
+
+TEST(ExodusMeshReader, PositionsMatchPeridigmGolds) {
+  expectPositionsMatchGold(kCases + "/WaveInBar/WaveInBar.g",
+                           kCases + "/WaveInBar/WaveInBar_gold.e");
+  expectPositionsMatchGold(kCases + "/Contact_Cubes/Contact_Cubes.g",
+                           kCases + "/Contact_Cubes/Contact_Cubes_gold.e");
+  expectPositionsMatchGold(kCases + "/ElasticBondBased3D/ElasticBondBased3D.g",
+                           kCases + "/ElasticBondBased3D/ElasticBondBased3D_gold.e");
+}
+
+TEST(ExodusMeshReader, ElasticBondBased3DVolumesBlocksAndMapMatchGold) {
+  const auto cloud =
+      peridot::readExodusMesh(kCases + "/ElasticBondBased3D/ElasticBondBased3D.g", kDeckPath);
+  const auto gold =
+      peridot::readExodusResults(kCases + "/ElasticBondBased3D/ElasticBondBased3D_gold.e");
+  ASSERT_EQ(cloud.size(), 384u);
+  ASSERT_EQ(cloud.blockNames.size(), 3u);
+  EXPECT_EQ(cloud.blockNames.at(2), "block_2");
+  // The file's element number map puts block 1's elements at ids 289..384.
+  EXPECT_EQ(cloud.globalId[0], 288);
+  EXPECT_EQ(cloud.blockId[0], 1);
+  const auto it = std::find(gold.elementNames.begin(), gold.elementNames.end(), "Volume");
+  ASSERT_NE(it, gold.elementNames.end());
+  const auto& volume = gold.element[static_cast<std::size_t>(it - gold.elementNames.begin())][0];
+  std::vector<long long> index(385, -1);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    index[static_cast<std::size_t>(cloud.globalId[i])] = static_cast<long long>(i);
+  }
+  for (std::size_t e = 0; e < gold.elementIds.size(); ++e) {
+    const long long p = index[static_cast<std::size_t>(gold.elementIds[e] - 1)];
+    ASSERT_GE(p, 0);
+    EXPECT_NEAR(cloud.volume[static_cast<std::size_t>(p)], volume[e], 1e-15 + 1e-12 * volume[e]);
+    EXPECT_EQ(cloud.blockId[static_cast<std::size_t>(p)], gold.elementBlock[e]);
+  }
+  // The single node set holds every node, hence every point.
+  ASSERT_EQ(cloud.pointSets.size(), 1u);
+  EXPECT_EQ(cloud.pointSets[0].globalIds.size(), 384u);
+}
+
+TEST(ExodusMeshReader, ContactCubesNodeSetsAreTheCubes) {
+  const auto cloud = peridot::readExodusMesh(kCases + "/Contact_Cubes/Contact_Cubes.g", kDeckPath);
+  ASSERT_EQ(cloud.size(), 128u);
+  ASSERT_EQ(cloud.pointSets.size(), 2u);
+  for (int s = 0; s < 2; ++s) {
+    EXPECT_EQ(cloud.pointSets[s].name, "nodelist_" + std::to_string(s + 1));
+    std::vector<long long> block;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (cloud.blockId[i] == s + 1) block.push_back(cloud.globalId[i]);
+    }
+    std::sort(block.begin(), block.end());
+    EXPECT_EQ(cloud.pointSets[s].globalIds, block);
+  }
+}
+
+// ---- errors ----
+
+TEST(ExodusMeshReader, MissingFileNamesTheFile) {
+  expectInputError(
+      [] { peridot::readExodusMesh("no_such_dir/foo.g", kDeckPath); },
+      {kDeckPath, "cannot open Exodus mesh \"no_such_dir/foo.g\"", "No such file or directory"});
+}
+
+TEST(ExodusMeshReader, TruncatedFilesAreRejected) {
+  std::ifstream in(kCases + "/WaveInBar/WaveInBar.g", std::ios::binary);
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 20000u);
+  for (std::size_t length : {std::size_t{1000}, std::size_t{20000}, bytes.size() - 8}) {
+    TempFile file(tempPath("truncated.g"));
+    {
+      std::ofstream out(file.path, std::ios::binary);
+      out.write(bytes.data(), static_cast<std::streamsize>(length));
+    }
+    expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                     {kDeckPath, file.path, "truncated"});
+  }
+}
+
+TEST(ExodusMeshReader, NotAnExodusFile) {
+  TempFile file(tempPath("text.g"));
+  {
+    std::ofstream out(file.path);
+    out << "this is not a mesh\n";
+  }
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {"cannot open Exodus mesh", file.path});
+}
+
+// ---- meshes written by the test ----
+
+TEST(ExodusMeshReader, ReadsSphereElements) {
+  TestMesh mesh;
+  addNode(mesh, 0.0, 0.0, 0.0);
+  addNode(mesh, 1.0, 2.0, 3.0);
+  addNode(mesh, -1.0, 0.5, 2.0);
+  TestBlock balls;
+  balls.id = 5;
+  balls.type = "SPHERE";
+  balls.nodesPerElement = 1;
+  balls.numAttributes = 2;
+  balls.connectivity = {3, 1, 2};
+  balls.attributes = {0.1, 0.25, 0.2, 0.5, 0.3, 0.75};  // (radius, volume) per element
+  balls.name = "balls";
+  mesh.blocks.push_back(balls);
+  mesh.elementIds = {30, 10, 20};
+  mesh.nodeSets.push_back({1, "", {2}});
+  mesh.nodeSets.push_back({7, "corner", {1, 3}});
+  TempFile file(tempPath("spheres.g"));
+  writeMesh(file.path, mesh);
+
+  const auto cloud = peridot::readExodusMesh(file.path, kDeckPath);
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_EQ(cloud.blockNames.at(5), "balls");
+  EXPECT_EQ(cloud.globalId, (std::vector<long long>{29, 9, 19}));
+  EXPECT_EQ(cloud.blockId, (std::vector<int>{5, 5, 5}));
+  EXPECT_EQ(cloud.volume, (std::vector<double>{0.25, 0.5, 0.75}));
+  EXPECT_EQ(cloud.x, (std::vector<double>{-1.0, 0.5, 2.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0}));
+  ASSERT_EQ(cloud.pointSets.size(), 2u);
+  EXPECT_EQ(cloud.pointSets[0].name, "nodelist_1");
+  EXPECT_EQ(cloud.pointSets[0].globalIds, (std::vector<long long>{19}));
+  EXPECT_EQ(cloud.pointSets[1].name, "corner");
+  EXPECT_EQ(cloud.pointSets[1].globalIds, (std::vector<long long>{9, 29}));
+}
+
+TEST(ExodusMeshReader, SphereWithoutVolumeAttributeIsAnError) {
+  TestMesh mesh;
+  addNode(mesh, 0.0, 0.0, 0.0);
+  TestBlock ball;
+  ball.id = 2;
+  ball.type = "SPHERE";
+  ball.nodesPerElement = 1;
+  ball.numAttributes = 1;
+  ball.connectivity = {1};
+  ball.attributes = {0.1};
+  mesh.blocks.push_back(ball);
+  TempFile file(tempPath("sphere1.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {kDeckPath, "element block 2", "second attribute"});
+}
+
+TEST(ExodusMeshReader, MixedHexTetAndHex20) {
+  // A unit cube (HEX8, block 1), a tet on top of it (TET4, block 2), and a cube shifted in x
+  // written as a HEX20 (block 3; its 12 mid-edge nodes are ignored for the geometry).
+  TestMesh mesh;
+  for (const auto& c : kUnitCube) addNode(mesh, c[0], c[1], c[2]);        // nodes 1-8
+  addNode(mesh, 0.5, 0.5, 2.0);                                           // node 9
+  for (const auto& c : kUnitCube) addNode(mesh, c[0] + 2.0, c[1], c[2]);  // nodes 10-17
+  for (int i = 0; i < 12; ++i) addNode(mesh, 2.5, 0.5, 0.5);              // nodes 18-29
+  TestBlock hex;
+  hex.id = 1;
+  hex.connectivity = {1, 2, 3, 4, 5, 6, 7, 8};
+  TestBlock tet;
+  tet.id = 2;
+  tet.type = "TETRA";
+  tet.nodesPerElement = 4;
+  tet.connectivity = {5, 6, 7, 9};
+  tet.name = "roof";
+  TestBlock hex20;
+  hex20.id = 3;
+  hex20.type = "HEX20";
+  hex20.nodesPerElement = 20;
+  for (int64_t n = 10; n <= 29; ++n) hex20.connectivity.push_back(n);
+  mesh.blocks = {hex, tet, hex20};
+  mesh.nodeSets.push_back({4, "", {7}});   // shared by the hex and the tet
+  mesh.nodeSets.push_back({5, "", {20}});  // a mid-edge node of the HEX20
+  TempFile file(tempPath("mixed.g"));
+  writeMesh(file.path, mesh);
+
+  const auto cloud = peridot::readExodusMesh(file.path, kDeckPath);
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_NEAR(cloud.volume[0], 1.0, 1e-14);
+  EXPECT_NEAR(cloud.volume[1], 0.5 * 1.0 / 3.0, 1e-14);  // base triangle 1/2, height 1
+  EXPECT_NEAR(cloud.volume[2], 1.0, 1e-14);
+  const std::vector<double> expectedX = {0.5, 0.5, 0.5, 0.625, 0.375, 1.25, 2.5, 0.5, 0.5};
+  for (std::size_t i = 0; i < expectedX.size(); ++i) EXPECT_NEAR(cloud.x[i], expectedX[i], 1e-14);
+  EXPECT_EQ(cloud.blockNames.at(1), "block_1");
+  EXPECT_EQ(cloud.blockNames.at(2), "roof");
+  EXPECT_EQ(cloud.blockNames.at(3), "block_3");
+  ASSERT_EQ(cloud.pointSets.size(), 2u);
+  EXPECT_EQ(cloud.pointSets[0].name, "nodelist_4");
+  EXPECT_EQ(cloud.pointSets[0].globalIds, (std::vector<long long>{0, 1}));
+  EXPECT_EQ(cloud.pointSets[1].globalIds, (std::vector<long long>{2}));
+}
+
+TEST(ExodusMeshReader, UnsupportedElementTypeNamesBlockAndType) {
+  TestMesh mesh;
+  for (int i = 0; i < 4; ++i) addNode(mesh, i % 2, i / 2, 0.0);
+  TestBlock quad;
+  quad.id = 9;
+  quad.type = "QUAD4";
+  quad.nodesPerElement = 4;
+  quad.connectivity = {1, 2, 4, 3};
+  mesh.blocks.push_back(quad);
+  TempFile file(tempPath("quad.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {kDeckPath, "element block 9", "QUAD4", "not supported yet"});
+}
+
+TEST(ExodusMeshReader, TwoDimensionalMeshIsNotSupportedYet) {
+  TestMesh mesh;
+  mesh.dimension = 2;
+  for (int i = 0; i < 4; ++i) addNode(mesh, i % 2, i / 2, 0.0);
+  TestBlock quad;
+  quad.type = "QUAD4";
+  quad.nodesPerElement = 4;
+  quad.connectivity = {1, 2, 4, 3};
+  mesh.blocks.push_back(quad);
+  TempFile file(tempPath("quad2d.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {"2-dimensional", "not supported yet"});
+}
+
+TEST(ExodusMeshReader, MeshWithoutElementsIsAnError) {
+  TestMesh mesh;
+  addNode(mesh, 0.0, 0.0, 0.0);
+  TempFile file(tempPath("empty.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {kDeckPath, file.path, "no elements"});
+}
+
+TEST(ExodusMeshReader, DegenerateElementIsAnError) {
+  TestMesh mesh;
+  for (const auto& c : kUnitCube) addNode(mesh, c[0], c[1], 0.0);  // flattened cube
+  TestBlock hex;
+  hex.connectivity = {1, 2, 3, 4, 5, 6, 7, 8};
+  mesh.blocks.push_back(hex);
+  mesh.elementIds = {42};
+  TempFile file(tempPath("flat.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {"element 42", "volume"});
+}
+
+}  // namespace
