@@ -338,9 +338,8 @@ void Simulation::globalVariable(const std::string& name, std::vector<double>& va
 
 void Simulation::computeAcceleration() {
   for (int i = 0; i < topology_.numOwned; ++i) {
-    const double inv = 1.0 / density_[i];
     for (int d = 0; d < 3; ++d)
-      a_[3 * i + d] = (f_[3 * i + d] + (b_ ? b_[3 * i + d] : 0.0)) * inv;
+      a_[3 * i + d] = (f_[3 * i + d] + (b_ ? b_[3 * i + d] : 0.0)) / density_[i];
   }
 }
 
@@ -397,8 +396,8 @@ void Simulation::run() {
       conditions_->applyPrescribedVelocity(next, dt_, v_);
       if (b_) conditions_->applyBodyForce(next, b_, topology_.numOwned);
       for (int k = 0; k < n3; ++k) {
+        y_[k] = x_[k] + u_[k] + dt_ * v_[k];
         u_[k] += dt_ * v_[k];
-        y_[k] = x_[k] + u_[k];
       }
     }
     time_ = next;

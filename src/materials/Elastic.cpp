@@ -43,9 +43,14 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
   for (int i : points) {
     double m = 0;
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const Bond g = bondGeometry(s.x, s.x, i, neighbors[b]);
+      const int j = neighbors[b];
+      double zetaSquared = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double X = s.x[3 * j + d] - s.x[3 * i + d];
+        zetaSquared += X * X;
+      }
       const double omega = s.influence ? s.influence[b] : 1.0;
-      m += omega * g.zeta * g.zeta * s.volume[neighbors[b]];
+      m += omega * zetaSquared * s.volume[j];
     }
     weightedVolume_[i] = m;
     bulk_[i] = constants_.bulkModulus;
@@ -53,21 +58,23 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
   }
 }
 
+// The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
+// small cases reproduce its gold results to the last bits.
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   for (int i : points) {
     double theta = 0;
+    const double m = weightedVolume_[i];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const Bond g = bondGeometry(s.x, s.y, i, j);
-      double w = s.volume[j] * g.zeta * (g.dY - g.zeta);
-      if (s.influence) w *= s.influence[b];
-      if (s.bondDamage) w *= 1.0 - s.bondDamage[b];
-      theta += w;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      theta += 3.0 * omega * intact * g.zeta * (g.dY - g.zeta) * s.volume[j] / m;
     }
     // A point without bonds has no weighted volume and no dilatation.
-    dilatation_[i] = weightedVolume_[i] > 0 ? 3.0 * theta / weightedVolume_[i] : 0.0;
+    dilatation_[i] = m > 0 ? theta : 0.0;
   }
 }
 
@@ -78,24 +85,24 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
   const double* theta = dilatation_;
   for (int i : points) {
     double f[3] = {0, 0, 0};
-    const double mi = m[i];
-    const double ai = mi > 0 ? 3.0 * bulk_[i] * theta[i] / mi : 0.0;
-    const double bi = mi > 0 ? 15.0 * shear_[i] / mi : 0.0;
+    const double alphaI = m[i] > 0 ? 15.0 * shear_[i] / m[i] : 0.0;
+    const double betaI = m[i] > 0 ? 3.0 * bulk_[i] / m[i] - alphaI / 3.0 : 0.0;
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const Bond g = bondGeometry(s.x, s.y, i, j);
-      const double mj = m[j];
-      const double aj = mj > 0 ? 3.0 * bulk_[j] * theta[j] / mj : 0.0;
-      const double bj = mj > 0 ? 15.0 * shear_[j] / mj : 0.0;
+      if (!(g.dY > 0)) continue;  // coincident ends: no direction, no force
+      const double alphaJ = m[j] > 0 ? 15.0 * shear_[j] / m[j] : 0.0;
+      const double betaJ = m[j] > 0 ? 3.0 * bulk_[j] / m[j] - alphaJ / 3.0 : 0.0;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
       const double e = g.dY - g.zeta;
-      // Force state of i on the bond plus that of j on the reversed bond (pull form): each
-      // point sums only its own list, in global-id order.
-      double t = ai * g.zeta + bi * (e - theta[i] * g.zeta / 3.0) + aj * g.zeta +
-                 bj * (e - theta[j] * g.zeta / 3.0);
-      if (s.influence) t *= s.influence[b];
-      if (s.bondDamage) t *= 1.0 - s.bondDamage[b];
-      const double scale = g.dY > 0 ? t * s.volume[j] / g.dY : 0.0;
-      for (int d = 0; d < 3; ++d) f[d] += scale * g.Y[d];
+      // Force state of i on the bond, then that of j on the reversed bond (pull form: each
+      // point sums only its own list, in global-id order, whatever the rank count).
+      const double ti = intact * (omega * theta[i] * betaI * g.zeta + intact * omega * alphaI * e);
+      const double tj = intact * (omega * theta[j] * betaJ * g.zeta + intact * omega * alphaJ * e);
+      const double vj = s.volume[j];
+      for (int d = 0; d < 3; ++d) f[d] += ti * g.Y[d] / g.dY * vj;
+      for (int d = 0; d < 3; ++d) f[d] += tj * g.Y[d] / g.dY * vj;
     }
     for (int d = 0; d < 3; ++d) s.forceDensity[3 * i + d] = f[d];
   }

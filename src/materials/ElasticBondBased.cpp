@@ -61,14 +61,22 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
                    Y2 = y[3 * j + 2] - y[3 * i + 2];
       const double zeta = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-      double t = 0.5 * (ci + c[j]) * (dY - zeta) / zeta;
-      if (s.influence) t *= s.influence[b];
-      if (s.bondDamage) t *= 1.0 - s.bondDamage[b];
+      double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      if (s.influence) intact *= s.influence[b];
+      const double stretch = (dY - zeta) / zeta;
+      // Half the pair force from each end, with each end's micromodulus, summed in the same
+      // order of operations as Peridigm so that small cases reproduce its results to the bit.
+      const double ti = 0.5 * intact * stretch * ci;
+      const double tj = 0.5 * intact * stretch * c[j];
       // A bond whose ends coincide carries no direction and, by symmetry, no force.
-      const double scale = dY > 0 ? t * s.volume[j] / dY : 0.0;
-      f0 += scale * Y0;
-      f1 += scale * Y1;
-      f2 += scale * Y2;
+      if (!(dY > 0)) continue;
+      const double vj = s.volume[j];
+      f0 += ti * Y0 / dY * vj;
+      f1 += ti * Y1 / dY * vj;
+      f2 += ti * Y2 / dY * vj;
+      f0 += tj * Y0 / dY * vj;
+      f1 += tj * Y1 / dY * vj;
+      f2 += tj * Y2 / dY * vj;
     }
     s.forceDensity[3 * i] = f0;
     s.forceDensity[3 * i + 1] = f1;

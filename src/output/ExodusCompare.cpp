@@ -474,10 +474,12 @@ struct Selection {
   Tolerance tolerance;
 };
 
-// The variables of one kind to compare: those the section lists, else all of the gold's.
+// The variables of one kind to compare: those the section lists, else all of the gold's; none
+// when the .comp file has no section of that kind (exodiff's rule for command files).
 std::vector<Selection> select(const CompSpec& spec, const CompSpec::Section& section,
                               const std::vector<std::string>& goldNames) {
   std::vector<Selection> selection;
+  if (!section.present) return selection;
   if (!section.variables.empty()) {
     for (const auto& [name, tolerance] : section.variables) selection.push_back({name, tolerance});
   } else {

@@ -36,6 +36,7 @@ struct Tolerance {
 //   ELEMENT VARIABLES ... / GLOBAL VARIABLES ...
 // Keywords are case-insensitive; '#' starts a comment. When a section lists variables only those
 // are compared; otherwise every variable of that kind in the gold file, with the section default.
+// A kind with no section at all is not compared, as with exodiff's command files.
 // Without DEFAULT TOLERANCE the default is exodiff's: relative 1e-6.
 struct CompSpec {
   struct Section {
