@@ -1,0 +1,151 @@
+// Decomposition, neighbour lists and ghost exchange on 1, 2 and 3 ranks: every rank's lists
+// must equal a brute-force search over the whole cloud, and ghost copies must equal the owner's.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "fields/FieldManager.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+namespace {
+
+PointCloud randomCloud(std::size_t n, unsigned seed) {
+  PointCloud c;
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.x.insert(c.x.end(), {u(gen), u(gen), 0.5 * u(gen)});
+    c.volume.push_back(1e-3);
+    c.blockId.push_back(i % 7 == 0 ? 2 : 1);
+    c.globalId.push_back(static_cast<long long>(3 * i + 5));  // ids need not be contiguous
+  }
+  c.blockNames = {{1, "block_1"}, {2, "block_2"}};
+  return c;
+}
+
+// Neighbour global ids of every point by brute force.
+std::map<long long, std::vector<long long>> bruteForce(const PointCloud& c, const std::vector<double>& h,
+                                                       const std::vector<BondFilter>& filters) {
+  std::map<long long, std::vector<long long>> out;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    auto& list = out[c.globalId[i]];
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      if (i == j) continue;
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d) d2 += std::pow(c.x[3 * j + d] - c.x[3 * i + d], 2);
+      if (d2 > h[i] * h[i]) continue;
+      bool cut = false;
+      for (const auto& f : filters) cut = cut || f.cuts(&c.x[3 * i], &c.x[3 * j]);
+      if (!cut) list.push_back(c.globalId[j]);
+    }
+    std::sort(list.begin(), list.end());
+  }
+  return out;
+}
+
+void expectListsMatch(const PointCloud& cloud, const std::vector<double>& h,
+                      const std::vector<BondFilter>& filters) {
+  TopologyOptions options;
+  options.bondFilters = &filters;
+  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  const auto expected = bruteForce(cloud, h, filters);
+  long long owned = t.numOwned, total = 0, bonds = 0;
+  MPI_Allreduce(&owned, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, static_cast<long long>(cloud.size()));
+  for (const auto& kv : expected) bonds += static_cast<long long>(kv.second.size());
+  EXPECT_EQ(t.globalNumBonds, bonds);
+  for (int i = 0; i < t.numOwned; ++i) {
+    std::vector<long long> got;
+    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+      got.push_back(t.overlapGlobalId[t.neighbors[b]]);
+    EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+  }
+}
+
+TEST(Topology, NeighbourListsMatchBruteForce) {
+  PointCloud cloud = randomCloud(1500, 7);
+  std::vector<double> h(cloud.size(), 0.09);
+  expectListsMatch(cloud, h, {});
+}
+
+TEST(Topology, VariableHorizonMatchesBruteForce) {
+  PointCloud cloud = randomCloud(1200, 11);
+  std::vector<double> h(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) h[i] = 0.05 + 0.08 * cloud.x[3 * i];
+  expectListsMatch(cloud, h, {});
+}
+
+TEST(Topology, BondFiltersMatchBruteForce) {
+  PointCloud cloud = randomCloud(1500, 3);
+  std::vector<double> h(cloud.size(), 0.1);
+  BondFilter plane;  // a crack from x = 0.5 halfway up the plate
+  plane.kind = BondFilter::Kind::RectangularPlane;
+  const double n[3] = {1, 0, 0}, corner[3] = {0.5, -0.1, -0.1}, bottom[3] = {0, 1, 0};
+  std::copy(n, n + 3, plane.normal);
+  std::copy(corner, corner + 3, plane.lowerLeftCorner);
+  std::copy(bottom, bottom + 3, plane.bottomUnitVector);
+  plane.bottomLength = 0.6;
+  plane.sideLength = 1.0;
+  BondFilter disk;
+  disk.kind = BondFilter::Kind::Disk;
+  const double c[3] = {0.25, 0.25, 0.25}, dn[3] = {0, 0, 1};
+  std::copy(c, c + 3, disk.center);
+  std::copy(dn, dn + 3, disk.normal);
+  disk.radius = 0.2;
+  expectListsMatch(cloud, h, {plane, disk});
+  // The filters must actually remove bonds, or this test proves nothing.
+  auto all = bruteForce(cloud, h, {}), cut = bruteForce(cloud, h, {plane, disk});
+  std::size_t a = 0, b = 0;
+  for (const auto& kv : all) a += kv.second.size();
+  for (const auto& kv : cut) b += kv.second.size();
+  EXPECT_LT(b, a - 100);
+}
+
+TEST(Topology, GhostExchangeCopiesOwnerValues) {
+  PointCloud cloud = randomCloud(2000, 5);
+  std::vector<double> h(cloud.size(), 0.08);
+  Topology t = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
+  FieldManager fields(t);
+  double* s = fields.node("Scalar", 1);
+  double* v = fields.node("Vector", 3);
+  for (int i = 0; i < t.numOverlap; ++i) {
+    const bool owned = i < t.numOwned;
+    s[i] = owned ? 0.5 * static_cast<double>(t.overlapGlobalId[i]) : -1.0;
+    for (int d = 0; d < 3; ++d) v[3 * i + d] = owned ? 10.0 * t.overlapGlobalId[i] + d : -1.0;
+  }
+  fields.refreshGhosts("Scalar");
+  fields.refreshGhosts("Vector");
+  for (int i = 0; i < t.numOverlap; ++i) {
+    EXPECT_EQ(s[i], 0.5 * static_cast<double>(t.overlapGlobalId[i]));
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(v[3 * i + d], 10.0 * t.overlapGlobalId[i] + d);
+  }
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1) {
+    long long ghosts = t.numOverlap - t.numOwned, total = 0;
+    MPI_Allreduce(&ghosts, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_GT(total, 0);  // the exchange was exercised
+  }
+}
+
+TEST(Topology, WeightedPartitionBalancesBonds) {
+  // Points twice as dense on one side: balancing by bonds, not points.
+  PointCloud cloud = randomCloud(3000, 9);
+  for (std::size_t i = 0; i < cloud.size(); i += 2) cloud.x[3 * i] *= 0.3;
+  std::vector<double> h(cloud.size(), 0.08);
+  Topology t = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  long long mine = t.numBonds() + t.numOwned, maxWork = 0, total = 0;
+  MPI_Allreduce(&mine, &maxWork, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_LT(static_cast<double>(maxWork), 1.15 * static_cast<double>(total) / size);
+}
+
+}  // namespace
+}  // namespace peridot
