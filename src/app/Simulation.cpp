@@ -383,6 +383,7 @@ void Simulation::run() {
   checkFinite(0, time_);
   computeAcceleration();
   outputs_->write(0, time_);
+  if (observer_) observer_(0, time_);
 
   const double half = 0.5 * dt_;
   const int n3 = 3 * topology_.numOwned;
@@ -409,6 +410,7 @@ void Simulation::run() {
       for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
     }
     if (outputs_->due(step)) outputs_->write(step, time_);
+    if (observer_) observer_(step, time_);
     if (rank_ == 0) {
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - lastReport).count() > 5.0 || (step == numSteps_ && std::chrono::duration<double>(now - start).count() > 5.0)) {

@@ -1,6 +1,7 @@
 #pragma once
 // A run: builds the problem from a validated deck (discretization, blocks, decomposition,
 // neighbourhoods, fields, models, conditions, outputs) and integrates it in time.
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -26,6 +27,10 @@ class Simulation : public VariableSource {
 
   // Runs the Verlet solver to the final time, writing the outputs. Collective.
   void run();
+  // Called after every completed step (and once for the initial state with step 0).
+  void setStepObserver(std::function<void(long long step, double time)> observer) {
+    observer_ = std::move(observer);
+  }
 
   // VariableSource
   void nodeVariable(const std::string& name, std::vector<double>& ownedValues) override;
@@ -67,6 +72,7 @@ class Simulation : public VariableSource {
   std::vector<int> blockIndexOfPoint_;         // owned -> index in blocks_
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;
+  std::function<void(long long, double)> observer_;
   double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr,
          *f_ = nullptr, *b_ = nullptr, *volume_ = nullptr;
 };

@@ -91,6 +91,20 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
   return deck;
 }
 
+Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& format) {
+  Teuchos::RCP<Teuchos::ParameterList> deck;
+  try {
+    deck = format == "yaml" ? Teuchos::getParametersFromYamlString(text)
+                            : Teuchos::getParametersFromXmlString(text);
+  } catch (const std::exception& e) {
+    throw InputError(std::string("cannot parse deck text: ") + e.what());
+  }
+  if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
+    deck = Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
+  }
+  return deck;
+}
+
 ListReader::ListReader(const Teuchos::ParameterList& list, std::string path)
     : list_(list), path_(std::move(path)) {}
 

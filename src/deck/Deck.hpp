@@ -14,6 +14,9 @@ namespace peridot {
 // Reads `fileName` (.xml, or .yaml/.yml with an optional top-level `Peridigm:` key).
 Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName);
 
+// Parses deck text given in memory ("xml" or "yaml"), e.g. for tests.
+Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& format);
+
 std::string joinPath(const std::string& path, const std::string& key);
 
 class ListReader {
