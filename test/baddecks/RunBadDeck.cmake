@@ -5,7 +5,10 @@
 #   WORK_DIR         scratch directory, emptied first (required)
 #   DECK             deck file in SOURCE_DIR/decks to copy into WORK_DIR (empty: copy none)
 #   DECK_ARG         argument given to peridot (default: the name of DECK)
-#   EXPECT           literal fragment that stderr must contain after "peridot: error: "
+#   EXPECT           literal fragment that stderr must contain (with "peridot: error: ")
+#   EXPECT_ALSO      optional second literal fragment that stderr must contain
+#   MESSAGE_MAY_BE_LOST  ON: a missing message is only reported, not a failure (under mpirun
+#                    a rank's MPI_Abort can kill rank 0 before it prints; see README.md)
 #   EXPECT_STATUS    exit status required (default 1, peridot's status for input errors);
 #                    "nonzero" accepts any failure (used under mpirun, whose status varies)
 #   NP, MPIEXEC      run under `MPIEXEC --oversubscribe -np NP` when NP is set
@@ -13,6 +16,7 @@
 #   TRUNCATE_SOURCE, TRUNCATE_BYTES, TRUNCATE_TARGET
 #                    copy the first TRUNCATE_BYTES bytes of TRUNCATE_SOURCE to WORK_DIR/TRUNCATE_TARGET
 #   HEAD             path of `head` (for the truncation)
+#   MAKE_DIR         create this directory in WORK_DIR (to hand peridot a directory)
 # Checks: (a) the exit status, (b) stderr contains "peridot: error: " and EXPECT, and no
 # "internal error", (c) no Exodus output (*.e, *.h, *.e.<n>.<r>) in WORK_DIR.
 foreach(v PERIDOT SOURCE_DIR WORK_DIR EXPECT)
@@ -39,6 +43,10 @@ if(DECK)
 endif()
 if(NOT DEFINED DECK_ARG OR "${DECK_ARG}" STREQUAL "")
   message(FATAL_ERROR "RunBadDeck.cmake: set DECK or DECK_ARG")
+endif()
+
+if(MAKE_DIR)
+  file(MAKE_DIRECTORY "${WORK_DIR}/${MAKE_DIR}")
 endif()
 
 if(CDL)
@@ -89,13 +97,19 @@ elseif(NOT rc STREQUAL "${EXPECT_STATUS}")
   string(APPEND problems "expected exit status ${EXPECT_STATUS}, got \"${rc}\"\n")
 endif()
 # (b) the message
-string(FIND "${err}" "peridot: error: " at)
-if(at EQUAL -1)
-  string(APPEND problems "stderr lacks \"peridot: error: \"\n")
-endif()
-string(FIND "${err}" "${EXPECT}" at)
-if(at EQUAL -1)
-  string(APPEND problems "stderr lacks the expected fragment:\n  ${EXPECT}\n")
+set(missing "")
+foreach(fragment "peridot: error: " "${EXPECT}" "${EXPECT_ALSO}")
+  if(NOT fragment STREQUAL "")
+    string(FIND "${err}" "${fragment}" at)
+    if(at EQUAL -1)
+      string(APPEND missing "stderr lacks the expected fragment:\n  ${fragment}\n")
+    endif()
+  endif()
+endforeach()
+if(missing AND MESSAGE_MAY_BE_LOST)
+  message(WARNING "the error message was lost (tolerated under mpirun):\n${missing}")
+else()
+  string(APPEND problems "${missing}")
 endif()
 string(FIND "${err}" "internal error" at)
 if(NOT at EQUAL -1)

@@ -25,3 +25,22 @@ if(EXISTS "${PERIDOT_CASES_DIR}")
 else()
   message(WARNING "Peridigm cases not found at ${PERIDOT_CASES_DIR}: regression tests skipped")
 endif()
+
+# Nodal results must not depend on the rank count, to the bit.
+function(peridot_identical name case_dir deck output comp all_ids)
+  add_test(NAME identical_${name}
+    COMMAND ${CMAKE_COMMAND}
+      -DCASE_DIR=${case_dir} -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/${name}
+      -DDECK=${deck} -DOUTPUT=${output} -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/${comp}
+      "-DNPS=1;2;3;4" -DMPIEXEC=${MPIEXEC_EXECUTABLE} -DALL_IDS=${all_ids}
+      -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+  set_tests_properties(identical_${name} PROPERTIES
+    ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+endfunction()
+
+if(EXISTS "${PERIDOT_CASES_DIR}")
+  peridot_identical(WaveInBar ${PERIDOT_CASES_DIR}/WaveInBar WaveInBar.xml WaveInBar.e exact_wave.comp 0)
+endif()
+peridot_identical(DamageCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube DamageCube.yaml
+                  DamageCube.e exact.comp 10000)
