@@ -178,6 +178,21 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_);
   if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
 
+  if (config_.contact.enabled) {
+    std::vector<std::string> blockName(topology_.numOwned);
+    for (int i = 0; i < topology_.numOwned; ++i) blockName[i] = blocks_[blockIndexOfPoint_[i]].name;
+    for (const auto& pair : config_.contact.pairs) {
+      for (const auto& name : {pair.first, pair.second}) {
+        if (!std::any_of(blocks_.begin(), blocks_.end(), [&](const Block& b) { return b.name == name; })) {
+          throw InputError(config_.contact.path + " -> Interactions",
+                           "unknown block \"" + name + "\"");
+        }
+      }
+    }
+    fc_ = fields_->node("Contact_Force_Density", 3);
+    contact_ = std::make_unique<ShortRangeContact>(config_.contact, topology_, blockName, horizon,
+                                                   volume_, timers_);
+  }
   checkVariables();
 
   stableDt_ = stableTimeStep(topology_, x_, volume_, horizon, density_.data(), bulkModulus_.data());
@@ -262,6 +277,8 @@ void Simulation::nodeVariable(const std::string& name, std::vector<double>& out)
       for (int d = 0; d < 3; ++d) out[3 * i + d] = f_[3 * i + d] * volume_[i];
   } else if (name == "External_Force_Density") {
     if (b_) copy(b_);
+  } else if (name == "Contact_Force_Density") {
+    if (fc_) copy(fc_);
   } else if (name == "Damage") {
     evaluator_->nodeDamage(out.data());
   } else if (name == "Dilatation" || name == "Weighted_Volume") {
@@ -336,10 +353,20 @@ void Simulation::globalVariable(const std::string& name, std::vector<double>& va
   throw std::logic_error("no global variable " + name);
 }
 
+void Simulation::evaluateForces(long long step) {
+  if (contact_ && step == 0) contact_->search(y_);
+  evaluator_->evaluate(dt_);
+  if (contact_) contact_->computeForce(y_, v_, fc_);
+}
+
 void Simulation::computeAcceleration() {
   for (int i = 0; i < topology_.numOwned; ++i) {
-    for (int d = 0; d < 3; ++d)
-      a_[3 * i + d] = (f_[3 * i + d] + (b_ ? b_[3 * i + d] : 0.0)) / density_[i];
+    for (int d = 0; d < 3; ++d) {
+      double force = f_[3 * i + d];
+      if (fc_) force += fc_[3 * i + d];
+      if (b_) force += b_[3 * i + d];
+      a_[3 * i + d] = force / density_[i];
+    }
   }
 }
 
@@ -379,7 +406,7 @@ void Simulation::run() {
   conditions_->applyInitial(time_, u_, v_);
   for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
   if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
-  evaluator_->evaluate(dt_);
+  evaluateForces(0);
   checkFinite(0, time_);
   computeAcceleration();
   outputs_->write(0, time_);
@@ -391,6 +418,8 @@ void Simulation::run() {
   auto lastReport = start;
   for (long long step = 1; step <= numSteps_; ++step) {
     const double next = s.initialTime + step * dt_;
+    // The contact lists follow the current configuration (Peridigm searches at these steps).
+    if (contact_ && step % config_.contact.searchFrequency == 0) contact_->search(y_);
     {
       Timers::Scope t(timers_, "Integration");
       for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
@@ -402,7 +431,7 @@ void Simulation::run() {
       }
     }
     time_ = next;
-    evaluator_->evaluate(dt_);
+    evaluateForces(step);
     checkFinite(step, time_);
     {
       Timers::Scope t(timers_, "Integration");

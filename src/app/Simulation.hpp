@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bc/Conditions.hpp"
+#include "contact/ShortRangeContact.hpp"
 #include "core/Timers.hpp"
 #include "deck/RunConfig.hpp"
 #include "discretization/PointCloud.hpp"
@@ -49,6 +50,7 @@ class Simulation : public VariableSource {
   void buildBlocks();
   void checkVariables();
   void computeAcceleration();
+  void evaluateForces(long long step);
   void checkFinite(long long step, double time);
   double sumOver(const std::vector<int>* points, const std::string& variable, int component,
                  const std::string& calculation);
@@ -68,13 +70,15 @@ class Simulation : public VariableSource {
   std::map<std::string, std::vector<int>> nodeSets_;  // owned local indices
   std::unique_ptr<BoundaryConditions> conditions_;
   std::unique_ptr<OutputManager> outputs_;
+  std::unique_ptr<ShortRangeContact> contact_;
   std::vector<double> density_, bulkModulus_;  // owned
   std::vector<int> blockIndexOfPoint_;         // owned -> index in blocks_
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;
   std::function<void(long long, double)> observer_;
   double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr,
-         *f_ = nullptr, *b_ = nullptr, *volume_ = nullptr;
+         *f_ = nullptr, *b_ = nullptr, *volume_ = nullptr,
+         *fc_ = nullptr;
 };
 
 }  // namespace peridot

@@ -177,6 +177,7 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Force_Density", 3, "internal force density"},
       {"Force", 3, "internal force density x volume"},
       {"External_Force_Density", 3, "body force density"},
+      {"Contact_Force_Density", 3, "short-range contact force density"},
       {"Damage", 1, "fraction of broken bonds"},
       {"Dilatation", 1, "LPS dilatation"},
       {"Weighted_Volume", 1, "LPS weighted volume"},
@@ -286,7 +287,8 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
     }
   }
 
-  for (const char* unsupported : {"Contact", "Data Loader", "Multiphysics", "Optimization Based Coupling"}) {
+  if (top.has("Contact")) config.contact = readContactConfig(top.sublist("Contact"));
+  for (const char* unsupported : {"Data Loader", "Multiphysics", "Optimization Based Coupling"}) {
     if (top.has(unsupported)) {
       throw InputError(unsupported, "not supported by Peridot yet");
     }

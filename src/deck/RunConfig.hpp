@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/ContactConfig.hpp"
 #include "damage/DamageModel.hpp"
 #include "discretization/Discretization.hpp"
 #include "materials/MaterialModel.hpp"
@@ -62,6 +63,7 @@ struct RunConfig {
   SolverConfig solver;
   std::vector<OutputConfig> outputs;
   std::vector<ComputeConfig> computes;
+  ContactConfig contact;
 };
 
 RunConfig readRunConfig(const Teuchos::ParameterList& deck);

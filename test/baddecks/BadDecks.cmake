@@ -37,7 +37,7 @@ set(PERIDOT_BADDECKS_WAVEINBAR "${PERIDOT_SHARED_DIR}/peridigm-cases/WaveInBar/W
 # peridot_baddeck(<name> [DECK <file in decks/>] [ARG <argument for peridot>]
 #                 EXPECT <fragment> [ALSO <fragment>] [NP <ranks>] [CDL <file in meshes/>]
 #                 [TRUNCATE <bytes>] [MAKE_DIR <dir>])
-# TRUNCATE copies the first <bytes> bytes of WaveInBar.g to truncated.g in the work directory.
+# TRUNCATE copies the first <bytes> bytes of WaveInBar.g to cut.g in the work directory.
 function(peridot_baddeck name)
   cmake_parse_arguments(PARSE_ARGV 1 B "" "DECK;ARG;EXPECT;ALSO;NP;CDL;TRUNCATE;MAKE_DIR" "")
   set(test baddeck_${name})
@@ -68,7 +68,7 @@ function(peridot_baddeck name)
       return()
     endif()
     list(APPEND args -DTRUNCATE_SOURCE=${PERIDOT_BADDECKS_WAVEINBAR} -DTRUNCATE_BYTES=${B_TRUNCATE}
-                     -DTRUNCATE_TARGET=truncated.g -DHEAD=${PERIDOT_HEAD_EXECUTABLE})
+                     -DTRUNCATE_TARGET=cut.g -DHEAD=${PERIDOT_HEAD_EXECUTABLE})
   endif()
   if(B_MAKE_DIR)
     list(APPEND args -DMAKE_DIR=${B_MAKE_DIR})
@@ -109,9 +109,9 @@ peridot_baddeck(missing_mesh DECK missing_mesh.xml
 peridot_baddeck(missing_mesh_exodus DECK missing_mesh_exodus.xml
   EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "nowhere.g": No such file or directory]])
 peridot_baddeck(truncated_exodus_data DECK truncated_exodus.xml TRUNCATE 5000
-  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "truncated.g": the file is truncated (5000 bytes where its header needs 42116)]])
+  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "cut.g": the file is truncated (5000 bytes where its header needs 42116)]])
 peridot_baddeck(truncated_exodus_header DECK truncated_exodus.xml TRUNCATE 1000
-  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "truncated.g": ]] ALSO [[truncated or corrupt]])
+  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "cut.g": ]] ALSO [[truncated or corrupt]])
 peridot_baddeck(exodus_shell_element DECK exodus_shell_element.xml CDL shell.cdl
   EXPECT [[Discretization -> Input Mesh File: Exodus mesh "shell.g": element block 1 ("block_1") has element type "SHELL4"]])
 peridot_baddeck(text_mesh_bad_line DECK text_mesh_bad_line.xml
@@ -196,8 +196,8 @@ peridot_baddeck(shorter_than_one_step DECK shorter_than_one_step.yaml
   EXPECT [[Solver -> Final Time: the run is shorter than one time step]])
 
 # ---- unsupported features ----
-peridot_baddeck(contact_unsupported DECK contact_unsupported.yaml
-  EXPECT [[Contact: not supported by Peridot yet]])
+peridot_baddeck(contact_without_models DECK contact_without_models.yaml
+  EXPECT [[Contact -> Models: required list is missing]])
 peridot_baddeck(quasistatic_unsupported DECK quasistatic_unsupported.yaml
   EXPECT [[Solver -> QuasiStatic: this solver is not supported by Peridot yet; use Verlet]])
 peridot_baddeck(restart_unsupported DECK restart_unsupported.yaml
@@ -229,7 +229,7 @@ peridot_baddeck(misspelt_required_material_key DECK misspelt_required_material_k
 peridot_baddeck(empty_node_set_string DECK empty_node_set_string.yaml
   EXPECT [[Boundary Conditions -> Left Node Set: the node set is empty]])
 peridot_baddeck(truncated_exodus_200_bytes DECK truncated_exodus.xml TRUNCATE 200
-  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "truncated.g": ]] ALSO [[truncated]])
+  EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "cut.g": ]] ALSO [[truncated]])
 peridot_baddeck(deck_is_directory ARG directory.xml MAKE_DIR directory.xml
   EXPECT [[cannot open deck file "directory.xml"]] ALSO [[directory]])
 peridot_baddeck(mesh_is_directory DECK mesh_is_directory.xml

@@ -152,7 +152,9 @@ TEST_P(Conservation, MomentumAndEnergyOverTenThousandSteps) {
   drift /= e0;
   // The energy bound holds where the leapfrog energy is an invariant: small, linear motion.
   // With the large rigid rotations of the random field, geometric nonlinearity moves it by ~1e-4.
-  if (smooth) EXPECT_LT(drift, 1e-6) << material << ": energy oscillation " << maxDeviation / e0;
+  if (smooth) {
+    EXPECT_LT(drift, 1e-6) << material << ": energy oscillation " << maxDeviation / e0;
+  }
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::printf("%s (%s): leapfrog energy drift %.3g, kinetic+stored oscillation %.3g, %lld steps\n",
@@ -209,7 +211,9 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
       brokenAt = t;
       vAtBreak = speed;
     }
-    if (brokenAt >= 0 && t > brokenAt) EXPECT_EQ(speed, vAtBreak) << "t = " << t;
+    if (brokenAt >= 0 && t > brokenAt) {
+      EXPECT_EQ(speed, vAtBreak) << "t = " << t;
+    }
   });
   sim->run();
   ASSERT_GT(brokenAt, 0.0);

@@ -1,0 +1,50 @@
+#pragma once
+// Short-range contact (Silling-Askari, Peridigm's "Short Range Force"): points of the contact
+// lists closer than the contact radius repel each other, with optional Coulomb-type friction.
+// The lists come from a search in the current configuration every `Search Frequency` steps and
+// hold the points within the search radius that are not bonded. Each owned point sums its own
+// list in global-id order (rank-count independent), taking both ends' share of each pair.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/ContactConfig.hpp"
+#include "core/Timers.hpp"
+#include "discretization/PointCloud.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+class ShortRangeContact {
+ public:
+  // `blockNameOfPoint`, `horizon`, `volume`: per owned point.
+  ShortRangeContact(const ContactConfig& config, const Topology& topology,
+                    const std::vector<std::string>& blockNameOfPoint, const double* horizon,
+                    const double* volume, Timers& timers);
+
+  // Rebuilds the contact lists from the current owned coordinates (collective).
+  void search(const double* y);
+  // Contact force density of the owned points (collective: refreshes contact ghosts).
+  void computeForce(const double* y, const double* v, double* contactForce);
+  long long numContactPairs() const;
+
+ private:
+  void refresh(const double* owned, std::vector<double>& ghost);
+
+  ContactConfig config_;
+  const Topology& topology_;
+  const double* horizon_;   // owned
+  const double* volume_;    // owned
+  Timers& timers_;
+  std::vector<std::string> blockName_;  // owned
+  std::vector<int> blockIndex_;         // owned, index into blockNames_
+  std::vector<std::string> blockNames_;
+  // Contact lists: neighbours are indices into [owned points | contact ghosts].
+  std::vector<std::int64_t> offsets_;
+  std::vector<int> neighbors_;
+  std::vector<double> ghostVolume_, ghostHorizon_, ghostY_, ghostV_;
+  Teuchos::RCP<const Map> ghostMap3_;
+  Teuchos::RCP<const Import> ghostImport3_;
+};
+
+}  // namespace peridot
