@@ -2,7 +2,9 @@
 
 #include <Tpetra_Core.hpp>
 
+#include <chrono>
 #include <cstring>
+#include <thread>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -121,11 +123,16 @@ int runApplication(int argc, char** argv) {
   try {
     status = runDeck(deckFile, checkOnly, rank);
   } catch (const InputError& e) {
-    // Every rank reads the same deck and mesh, so every rank fails here alike.
+    // Every rank reads the same deck and mesh (and rank-local findings are shared before they
+    // are thrown), so every rank fails here alike.
     if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
     status = 1;
   } catch (const RunError& e) {
-    std::cerr << "peridot: error: " << e.what() << std::endl;
+    if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
+    status = 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "peridot: error: out of memory on rank " << rank
+              << " (the problem is too large for this machine; use more ranks or nodes)" << std::endl;
     status = 3;
   } catch (const std::exception& e) {
     std::cerr << "peridot: internal error: " << e.what() << std::endl;
@@ -134,8 +141,12 @@ int runApplication(int argc, char** argv) {
   std::cout.flush();
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  // Other ranks may be waiting in a collective call: only an abort releases them.
-  if (status != 0 && size > 1) MPI_Abort(MPI_COMM_WORLD, status);
+  // Other ranks may be waiting in a collective call: only an abort releases them. Input errors
+  // are printed by rank 0; the others wait a moment so their abort does not cut it short.
+  if (status != 0 && size > 1) {
+    if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+    MPI_Abort(MPI_COMM_WORLD, status);
+  }
   return status;
 }
 

@@ -10,7 +10,9 @@
 #include <sstream>
 
 #include "bc/NodeSets.hpp"
+#include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "solvers/StableTimeStep.hpp"
 
@@ -85,7 +87,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     cloudHorizon_[p] = horizonOf[g]->evaluate(&cloud_.x[3 * p]);
     if (!(cloudHorizon_[p] > 0) || !std::isfinite(cloudHorizon_[p])) {
       throw InputError(config_.blocks[g].path + " -> Horizon",
-                       "the horizon must be positive, got " + std::to_string(cloudHorizon_[p]) +
+                       "the horizon must be positive, got " + formatNumber(cloudHorizon_[p]) +
                            " at point " + std::to_string(cloud_.globalId[p] + 1));
     }
   }
@@ -102,7 +104,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   if (topology_.globalNumBonds == 0) {
     double h = *std::min_element(cloudHorizon_.begin(), cloudHorizon_.end());
     throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
-                                   std::to_string(h) + ") is smaller than the point spacing");
+                                   formatNumber(h) + ") is smaller than the point spacing");
   }
   {
     std::vector<long long> lonely;
@@ -175,7 +177,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
         if (c.nodeSet == kv.first) throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
     }
   }
-  conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_);
+  conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_,
+                                                     topology_.overlapGlobalId.data());
   if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
 
   if (config_.contact.enabled) {
@@ -195,6 +198,10 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   checkVariables();
 
+  // Initial conditions now, so that a bad value stops the run before any file is written.
+  time_ = config_.solver.initialTime;
+  throwIfAnyRank(conditions_->applyInitial(time_, u_, v_), comm_);
+
   stableDt_ = stableTimeStep(topology_, x_, volume_, horizon, density_.data(), bulkModulus_.data());
   const auto& s = config_.solver;
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
@@ -203,7 +210,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   numSteps_ = static_cast<long long>(std::floor(ratio * (1.0 + 1e-14)));
   if (numSteps_ < 1) {
     throw InputError(s.path + " -> Final Time",
-                     "the run is shorter than one time step (dt = " + std::to_string(dt_) + ")");
+                     "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
   outputs_ = std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
 }
@@ -375,17 +382,18 @@ void Simulation::checkFinite(long long step, double time) {
   for (int i = 0; i < topology_.numOwned && bad < 0; ++i)
     for (int d = 0; d < 3; ++d)
       if (!std::isfinite(f_[3 * i + d]) || !std::isfinite(u_[3 * i + d])) bad = i;
-  int anyBad = bad >= 0 ? 1 : 0, globalBad = 0;
-  MPI_Allreduce(&anyBad, &globalBad, 1, MPI_INT, MPI_MAX, comm_);
-  if (!globalBad) return;
   std::ostringstream msg;
   if (bad >= 0) {
-    msg << "non-finite " << (std::isfinite(u_[3 * bad] + u_[3 * bad + 1] + u_[3 * bad + 2]) ? "force" : "displacement")
-        << " at point " << topology_.overlapGlobalId[bad] + 1 << " (block "
-        << blocks_[blockIndexOfPoint_[bad]].name << ") at step " << step << ", time " << time
-        << "; the time step (" << dt_ << ") may exceed the stable estimate (" << stableDt_ << ")";
+    const bool displacement = !std::isfinite(u_[3 * bad] + u_[3 * bad + 1] + u_[3 * bad + 2]);
+    msg << "non-finite " << (displacement ? "displacement" : "force") << " at point "
+        << topology_.overlapGlobalId[bad] + 1 << " (block " << blocks_[blockIndexOfPoint_[bad]].name
+        << ") at step " << step << ", time " << formatNumber(time);
+    if (dt_ > stableDt_) {
+      msg << "; the time step (" << formatNumber(dt_) << ") exceeds the stable estimate ("
+          << formatNumber(stableDt_) << ")";
+    }
   }
-  throw RunError(bad >= 0 ? msg.str() : "non-finite values on another rank");
+  throwIfAnyRank(msg.str(), comm_, true);
 }
 
 void Simulation::run() {
@@ -402,8 +410,6 @@ void Simulation::run() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
-  time_ = s.initialTime;
-  conditions_->applyInitial(time_, u_, v_);
   for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
   if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
   evaluateForces(0);

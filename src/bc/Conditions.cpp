@@ -1,13 +1,15 @@
 #include "bc/Conditions.hpp"
 
+#include <cmath>
+
 #include "core/Error.hpp"
 
 namespace peridot {
 
 BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& conditions,
                                        const std::map<std::string, std::vector<int>>& sets,
-                                       const double* x)
-    : x_(x) {
+                                       const double* x, const long long* pointIds)
+    : x_(x), pointIds_(pointIds) {
   for (const auto& cc : conditions) {
     auto it = sets.find(cc.nodeSet);
     if (it == sets.end()) {
@@ -31,21 +33,33 @@ double BoundaryConditions::evaluate(Condition& c, int p, double t) {
   return c.value->evaluate(vars);
 }
 
-void BoundaryConditions::applyInitial(double t0, double* u, double* v) {
+std::string BoundaryConditions::applyInitial(double t0, double* u, double* v) {
   using Kind = ConditionConfig::Kind;
+  std::string message;
+  auto check = [&](const Condition& c, int p, double value) {
+    if (std::isfinite(value) || !message.empty()) return;
+    message = c.config.path + " -> Value: the expression gives " + std::to_string(value) +
+              " at point " + std::to_string(pointIds_[p] + 1) + " (x = " + std::to_string(x_[3 * p]) +
+              ", y = " + std::to_string(x_[3 * p + 1]) + ", z = " + std::to_string(x_[3 * p + 2]) + ")";
+  };
   for (auto& c : conditions_) {
     const int d = c.config.coordinate;
     if (c.config.kind == Kind::InitialDisplacement || c.config.kind == Kind::PrescribedDisplacement) {
       if (c.config.kind == Kind::PrescribedDisplacement) c.previous.resize(c.points.size());
       for (std::size_t k = 0; k < c.points.size(); ++k) {
         const double value = evaluate(c, c.points[k], t0);
+        check(c, c.points[k], value);
         u[3 * c.points[k] + d] = value;
         if (c.config.kind == Kind::PrescribedDisplacement) c.previous[k] = value;
       }
     } else if (c.config.kind == Kind::InitialVelocity) {
-      for (int p : c.points) v[3 * p + d] = evaluate(c, p, t0);
+      for (int p : c.points) {
+        v[3 * p + d] = evaluate(c, p, t0);
+        check(c, p, v[3 * p + d]);
+      }
     }
   }
+  return message;
 }
 
 void BoundaryConditions::applyPrescribedVelocity(double tNext, double dt, double* v) {

@@ -14,12 +14,15 @@ namespace peridot {
 
 class BoundaryConditions {
  public:
-  // `sets`: owned local indices per node-set name; `x`: reference coordinates of owned points.
+  // `sets`: owned local indices per node-set name; `x`: reference coordinates of owned points;
+  // `pointIds`: their global (0-based) ids, for messages.
   BoundaryConditions(const std::vector<ConditionConfig>& conditions,
-                     const std::map<std::string, std::vector<int>>& sets, const double* x);
+                     const std::map<std::string, std::vector<int>>& sets, const double* x,
+                     const long long* pointIds);
 
-  // Initial displacement and velocity, and prescribed displacements at t0.
-  void applyInitial(double t0, double* u, double* v);
+  // Initial displacement and velocity, and prescribed displacements at t0. Returns a message
+  // naming the condition and point where a value is not finite (empty if all are).
+  std::string applyInitial(double t0, double* u, double* v);
   // Velocity of prescribed components over the step [tPrev, tNext]: (u(tNext) - u(tPrev)) / dt.
   void applyPrescribedVelocity(double tNext, double dt, double* v);
   // Sets the body force density at time t (zero elsewhere) in `externalForceDensity` (owned).
@@ -38,6 +41,7 @@ class BoundaryConditions {
   };
   double evaluate(Condition& c, int point, double t);
   const double* x_;
+  const long long* pointIds_ = nullptr;
   std::vector<Condition> conditions_;
   bool hasBodyForce_ = false;
   std::size_t evaluations_ = 0;

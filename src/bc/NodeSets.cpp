@@ -65,6 +65,9 @@ std::map<std::string, std::vector<long long>> collectNodeSets(const PointCloud& 
       throw InputError(spec.path, "a node set named \"" + spec.name + "\" already exists in the mesh");
     }
     std::vector<long long> ids;
+    if (spec.value.find_first_not_of(" \t\r\n") == std::string::npos) {
+      throw InputError(spec.path, "the node set is empty");
+    }
     if (allIntegers(spec.value)) {
       ids = readIds(spec.value, spec.path, "node set", maxId);
     } else {

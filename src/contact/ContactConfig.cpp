@@ -1,6 +1,7 @@
 #include "contact/ContactConfig.hpp"
 
 #include "core/Error.hpp"
+#include "core/Format.hpp"
 
 namespace peridot {
 
@@ -30,7 +31,7 @@ ContactConfig readContactConfig(ListReader c) {
   models.finish();
   if (cc.contactRadius > cc.searchRadius) {
     throw InputError(c.pathOf("Search Radius"),
-                     "must be at least the Contact Radius (" + std::to_string(cc.contactRadius) + ")");
+                     "must be at least the Contact Radius (" + formatNumber(cc.contactRadius) + ")");
   }
   ListReader interactions = c.sublist("Interactions");
   for (const auto& name : interactions.keys()) {

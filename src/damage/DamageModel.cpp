@@ -13,6 +13,14 @@ std::unique_ptr<DamageModel> createDamageModel(ListReader& params) {
     throw InputError(params.pathOf("Damage Model"),
                      "unknown damage model \"" + model + "\"; Peridot knows " + known);
   }
+  for (const auto& key : params.keys()) {
+    bool known = key == "Damage Model" || key == "Verbose";
+    for (const auto& doc : entry->parameters) known = known || doc.name == key;
+    if (!known) {
+      throw InputError(params.pathOf(key), "unknown parameter of damage model \"" + model +
+                                               "\" (peridot --help-model \"" + model + "\" lists them)");
+    }
+  }
   auto damage = entry->create(params);
   params.finish();
   return damage;

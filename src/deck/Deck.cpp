@@ -1,15 +1,20 @@
 #include "deck/Deck.hpp"
 
+#include <Teuchos_FileInputSource.hpp>
+#include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/Format.hpp"
 
 namespace peridot {
 
@@ -36,6 +41,48 @@ bool parseNumber(const std::string& text, double& value) {
   return end == t.c_str() + t.size() && errno == 0 && std::isfinite(value);
 }
 
+bool parseInteger(const std::string& text, long long& value) {
+  const std::string t = trim(text);
+  if (t.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoll(t.c_str(), &end, 10);
+  return end == t.c_str() + t.size() && errno == 0;
+}
+
+// Teuchos reads XML literals leniently ("78oo" as 78, "1.5" as an int 1) and lets a name appear
+// twice in a list; check the raw XML first so such decks fail with the deck path.
+void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path) {
+  std::set<std::string> names;
+  for (int k = 0; k < list.numChildren(); ++k) {
+    const Teuchos::XMLObject& child = list.getChild(k);
+    if (child.getTag() != "Parameter" && child.getTag() != "ParameterList") continue;
+    const std::string name = child.hasAttribute("name") ? child.getAttribute("name") : "";
+    const std::string here = joinPath(path, name);
+    if (!names.insert(name).second) {
+      throw InputError(here, "appears twice in the same list");
+    }
+    if (child.getTag() == "ParameterList") {
+      checkXmlLiterals(child, here);
+      continue;
+    }
+    if (!child.hasAttribute("type") || !child.hasAttribute("value")) continue;
+    const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
+    double d = 0;
+    long long i = 0;
+    std::string lower = trim(value);
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (type == "double" && !parseNumber(value, d)) {
+      throw InputError(here, "expected a number (type \"double\"), got \"" + value + "\"");
+    } else if (type == "int" && !parseInteger(value, i)) {
+      throw InputError(here, "expected an integer (type \"int\"), got \"" + value + "\"");
+    } else if (type == "bool" && lower != "true" && lower != "false" && lower != "yes" &&
+               lower != "no" && lower != "1" && lower != "0") {
+      throw InputError(here, "expected true or false (type \"bool\"), got \"" + value + "\"");
+    }
+  }
+}
+
 }  // namespace
 
 std::string joinPath(const std::string& path, const std::string& key) {
@@ -46,9 +93,8 @@ std::string describeEntry(const Teuchos::ParameterEntry& e) {
   if (e.isList()) return "a parameter list";
   if (e.isType<std::string>()) return "\"" + Teuchos::getValue<std::string>(e) + "\"";
   std::ostringstream s;
-  s.precision(17);
   if (e.isType<double>()) {
-    s << Teuchos::getValue<double>(e);
+    s << formatNumber(Teuchos::getValue<double>(e));
   } else if (e.isType<int>()) {
     s << Teuchos::getValue<int>(e);
   } else if (e.isType<long long>()) {
@@ -64,22 +110,41 @@ std::string describeEntry(const Teuchos::ParameterEntry& e) {
 Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
   std::ifstream probe(fileName);
   if (!probe) throw InputError("cannot open deck file \"" + fileName + "\"");
+  if (std::filesystem::is_directory(fileName)) {
+    throw InputError("cannot open deck file \"" + fileName + "\": it is a directory");
+  }
   const bool yaml = endsWith(fileName, ".yaml") || endsWith(fileName, ".yml");
   const bool xml = endsWith(fileName, ".xml");
   if (!yaml && !xml) {
     throw InputError("deck file \"" + fileName + "\" must end in .xml, .yaml or .yml");
   }
   Teuchos::RCP<Teuchos::ParameterList> deck;
+  if (xml) {
+    Teuchos::XMLObject root;
+    try {
+      root = Teuchos::FileInputSource(fileName).getObject();
+    } catch (const std::exception&) {
+      root = Teuchos::XMLObject();  // the parse below reports the syntax error
+    }
+    if (!root.isEmpty()) checkXmlLiterals(root, "");
+  }
   try {
     deck = yaml ? Teuchos::getParametersFromYamlFile(fileName)
                 : Teuchos::getParametersFromXmlFile(fileName);
   } catch (const std::exception& e) {
     std::string what = e.what();
-    // Teuchos prefixes its messages with source locations; keep the last informative line.
+    // Teuchos prefixes its messages with source locations; keep the lines that say where in
+    // the deck the problem is, and the last informative line.
     std::istringstream lines(what);
-    std::string line, last;
-    while (std::getline(lines, line))
-      if (!trim(line).empty()) last = trim(line);
+    std::string line, last, where;
+    while (std::getline(lines, line)) {
+      const std::string t = trim(line);
+      if (t.empty() || t.find(".cpp") != std::string::npos || t.find(".hpp") != std::string::npos)
+        continue;
+      if (where.empty() && t.find("line ") != std::string::npos) where = t;
+      last = t;
+    }
+    if (!where.empty() && where != last) last = where + "; " + last;
     throw InputError("cannot parse deck file \"" + fileName + "\" as " +
                      (yaml ? "YAML" : "XML") + ": " + last);
   }
@@ -236,9 +301,8 @@ std::string ListReader::numberOrExpression(const std::string& key) {
   if (e.isList()) throw InputError(pathOf(key), "expected a number or an expression, got a list");
   if (e.isType<std::string>()) return Teuchos::getValue<std::string>(e);
   std::ostringstream s;
-  s.precision(17);
   if (e.isType<double>()) {
-    s << Teuchos::getValue<double>(e);
+    s << formatNumber(Teuchos::getValue<double>(e));
   } else if (e.isType<int>()) {
     s << Teuchos::getValue<int>(e);
   } else if (e.isType<long long>()) {

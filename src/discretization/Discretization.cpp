@@ -1,6 +1,8 @@
 #include "discretization/Discretization.hpp"
 
 #include <cmath>
+#include <climits>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -113,6 +115,13 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
                            "expected a positive integer, got " + std::to_string(c.numPoints[d]));
         }
       }
+      const double total = static_cast<double>(c.numPoints[0]) * c.numPoints[1] * c.numPoints[2];
+      if (total > INT_MAX) {
+        throw InputError(g.path(), "too many points (" + std::to_string(c.numPoints[0]) + " x " +
+                                       std::to_string(c.numPoints[1]) + " x " +
+                                       std::to_string(c.numPoints[2]) + "); at most " +
+                                       std::to_string(INT_MAX) + " are supported");
+      }
       g.finish();
     } else {
       ListReader g = r.sublist("TensorProductCylinderMeshGenerator");
@@ -173,6 +182,9 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
 PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath) {
   std::ifstream in(fileName);
   if (!in) throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\"");
+  if (std::filesystem::is_directory(fileName)) {
+    throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\": it is a directory");
+  }
   PointCloud cloud;
   std::string line;
   long long lineNumber = 0;

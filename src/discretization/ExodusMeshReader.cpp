@@ -494,7 +494,17 @@ ExodusInputFile::ExodusInputFile(const std::string& fileName, const std::string&
   int ioWordSize = 0;
   float version = 0.0f;
   id_ = ex_open(fileName.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
-  if (id_ < 0) failOpen("not a readable Exodus file (" + exodusLastError() + ")");
+  if (id_ < 0) {
+    // A netCDF signature with a header that does not read is almost always a cut-off file.
+    std::ifstream in(fileName, std::ios::binary);
+    char magic[3] = {0, 0, 0};
+    in.read(magic, 3);
+    if (in && magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F') {
+      failOpen("the file is truncated or damaged: its netCDF header cannot be read (" +
+               exodusLastError() + ")");
+    }
+    failOpen("not a readable Exodus file (" + exodusLastError() + ")");
+  }
   ex_set_int64_status(id_, EX_ALL_INT64_API);
   // Read names as long as the file stores them (the library default is 32 characters).
   const int64_t longestName = ex_inquire_int(id_, EX_INQ_DB_MAX_USED_NAME_LENGTH);

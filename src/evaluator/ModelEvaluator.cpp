@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "deck/Expression.hpp"
 
@@ -86,14 +87,17 @@ void ModelEvaluator::initialize() {
       for (int i : b.points) family[i] = index;
     }
     fields_.refreshGhosts("Material_Family_Index");
-    for (int i = 0; i < topology_.numOwned; ++i)
+    std::string message;
+    for (int i = 0; i < topology_.numOwned && message.empty(); ++i)
       for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
         if (family[topology_.neighbors[b]] != family[i]) {
-          throw InputError("Blocks", "bonds join blocks whose materials are of different kinds (" +
-                                         families[static_cast<int>(family[i])] + " and " +
-                                         families[static_cast<int>(family[topology_.neighbors[b]])] +
-                                         "); set Discretization -> Omit Bonds Between Blocks: All");
+          message = "Blocks: bonds join blocks whose materials are of different kinds (" +
+                    families[static_cast<int>(family[i])] + " and " +
+                    families[static_cast<int>(family[topology_.neighbors[b]])] +
+                    "); set Discretization -> Omit Bonds Between Blocks: All";
+          break;
         }
+    throwIfAnyRank(message, topology_.comm);
   }
 
   std::set<MaterialModel*> declared;

@@ -1,6 +1,8 @@
 #include "materials/MaterialModel.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "core/Error.hpp"
 
@@ -18,6 +20,21 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
   if (params.has("Horizon")) {
     throw InputError(params.pathOf("Horizon"),
                      "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
+  }
+  // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
+  static const char* common[] = {"Material Model", "Density", "Bulk Modulus", "Shear Modulus",
+                                 "Young's Modulus", "Poisson's Ratio", "Verbose",
+                                 "Finite Difference Probe Length",
+                                 "Apply Automatic Differentiation Jacobian",
+                                 "Apply Shear Correction Factor", "Thermal Expansion Coefficient",
+                                 "Compute Partial Stress"};
+  for (const auto& key : params.keys()) {
+    bool known = std::find(std::begin(common), std::end(common), key) != std::end(common);
+    for (const auto& doc : entry->parameters) known = known || doc.name == key;
+    if (!known) {
+      throw InputError(params.pathOf(key), "unknown parameter of material model \"" + model +
+                                               "\" (peridot --help-model \"" + model + "\" lists them)");
+    }
   }
   auto material = entry->create(params);
   params.finish();
