@@ -503,6 +503,25 @@ CompareReport compareExodusResults(const ExodusResults& result, const ExodusResu
   const auto elementMatch =
       matchIds(result.elementIds, gold.elementIds, "element", report.problems);
 
+  // Every point must sit in the block it sits in in the gold.
+  {
+    std::size_t wrong = 0;
+    std::string first;
+    for (std::size_t i = 0; i < elementMatch.size(); ++i) {
+      if (elementMatch[i] < 0) continue;
+      const long long inResult = result.elementBlock[static_cast<std::size_t>(elementMatch[i])];
+      if (inResult == gold.elementBlock[i]) continue;
+      if (wrong++ == 0) {
+        first = "element " + std::to_string(gold.elementIds[i]) + " is in block " +
+                std::to_string(inResult) + " in the result, block " +
+                std::to_string(gold.elementBlock[i]) + " in the gold";
+      }
+    }
+    if (wrong > 0) {
+      report.problems.push_back(std::to_string(wrong) + " element(s) in another block, e.g. " + first);
+    }
+  }
+
   const int dims = std::min({result.dimension, gold.dimension, 3});
   static const char* const kAxis[3] = {"X", "Y", "Z"};
   for (int d = 0; d < dims; ++d) {
