@@ -19,20 +19,17 @@ void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>&
                                     double* bondDamage) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
+  const double* y = s.y;
+  const double* zeta = s.bondLength;
   const double sc = criticalStretch_;
   for (int i : points) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      if (bondDamage[b] == 1.0) continue;
       const int j = neighbors[b];
-      double X2 = 0, Y2 = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double X = s.x[3 * j + d] - s.x[3 * i + d];
-        const double Y = s.y[3 * j + d] - s.y[3 * i + d];
-        X2 += X * X;
-        Y2 += Y * Y;
-      }
-      const double zeta = std::sqrt(X2);
-      if ((std::sqrt(Y2) - zeta) / zeta > sc) bondDamage[b] = 1.0;
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+      const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
+      // max() keeps a broken bond broken without a branch the compiler cannot vectorize.
+      bondDamage[b] = stretch > sc ? 1.0 : bondDamage[b];
     }
   }
 }

@@ -28,6 +28,20 @@ void ModelEvaluator::initialize() {
   state_.horizon = fields_.node("Horizon", 1);
   state_.forceDensity = fields_.node("Force_Density", 3);
 
+  // Reference bond lengths, once: the kernels read them instead of the neighbours' reference
+  // coordinates (same formula, so the same bits).
+  {
+    std::vector<double>& length = fields_.bond("Reference_Bond_Length");
+    for (int i = 0; i < topology_.numOwned; ++i)
+      for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b) {
+        const int j = topology_.neighbors[b];
+        const double X0 = state_.x[3 * j] - state_.x[3 * i], X1 = state_.x[3 * j + 1] - state_.x[3 * i + 1],
+                     X2 = state_.x[3 * j + 2] - state_.x[3 * i + 2];
+        length[b] = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
+      }
+    state_.bondLength = length.data();
+  }
+
   // Bond influence: stored per bond only when it is not the constant 1.
   if (influenceFunction_ != "One") {
     std::vector<double>& omega = fields_.bond("Influence_Function");

@@ -34,7 +34,8 @@ void Elastic::declareFields(FieldManager& fields) {
   weightedVolume_ = fields.node(kWeightedVolume, 1);
   dilatation_ = fields.node(kDilatation, 1);
   bulk_ = fields.node(kBulkModulus, 1);
-  shear_ = fields.node(kShearModulus, 1);
+  alpha_ = fields.node(kAlpha, 1);
+  beta_ = fields.node(kBeta, 1);
 }
 
 void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
@@ -54,7 +55,9 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
     }
     weightedVolume_[i] = m;
     bulk_[i] = constants_.bulkModulus;
-    shear_[i] = constants_.shearModulus;
+    // A point without bonds has no weighted volume and exerts no force.
+    alpha_[i] = m > 0 ? 15.0 * constants_.shearModulus / m : 0.0;
+    beta_[i] = m > 0 ? 3.0 * constants_.bulkModulus / m - alpha_[i] / 3.0 : 0.0;
   }
 }
 
@@ -66,12 +69,15 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
   for (int i : points) {
     double theta = 0;
     const double m = weightedVolume_[i];
+    const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
-      const Bond g = bondGeometry(s.x, s.y, i, j);
+      const double Y0 = s.y[3 * j] - yi0, Y1 = s.y[3 * j + 1] - yi1, Y2 = s.y[3 * j + 2] - yi2;
+      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      const double zeta = s.bondLength[b];
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      theta += 3.0 * omega * intact * g.zeta * (g.dY - g.zeta) * s.volume[j] / m;
+      theta += 3.0 * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
     }
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
@@ -81,30 +87,42 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  const double* m = weightedVolume_;
   const double* theta = dilatation_;
+  const double* alpha = alpha_;
+  const double* beta = beta_;
+  const double* y = s.y;
+  const double* volume = s.volume;
+  const double* zeta = s.bondLength;
+  const double* omegaOf = s.influence;
+  const double* damage = s.bondDamage;
   for (int i : points) {
-    double f[3] = {0, 0, 0};
-    const double alphaI = m[i] > 0 ? 15.0 * shear_[i] / m[i] : 0.0;
-    const double betaI = m[i] > 0 ? 3.0 * bulk_[i] / m[i] - alphaI / 3.0 : 0.0;
+    double f0 = 0, f1 = 0, f2 = 0;
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double thetaBetaI = theta[i] * beta[i], alphaI = alpha[i];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
-      const Bond g = bondGeometry(s.x, s.y, i, j);
-      if (!(g.dY > 0)) continue;  // coincident ends: no direction, no force
-      const double alphaJ = m[j] > 0 ? 15.0 * shear_[j] / m[j] : 0.0;
-      const double betaJ = m[j] > 0 ? 3.0 * bulk_[j] / m[j] - alphaJ / 3.0 : 0.0;
-      const double omega = s.influence ? s.influence[b] : 1.0;
-      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      const double e = g.dY - g.zeta;
-      // Force state of i on the bond, then that of j on the reversed bond (pull form: each
-      // point sums only its own list, in global-id order, whatever the rank count).
-      const double ti = intact * (omega * theta[i] * betaI * g.zeta + intact * omega * alphaI * e);
-      const double tj = intact * (omega * theta[j] * betaJ * g.zeta + intact * omega * alphaJ * e);
-      const double vj = s.volume[j];
-      for (int d = 0; d < 3; ++d) f[d] += ti * g.Y[d] / g.dY * vj;
-      for (int d = 0; d < 3; ++d) f[d] += tj * g.Y[d] / g.dY * vj;
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      if (!(dY > 0)) continue;  // coincident ends: no direction, no force
+      const double omega = omegaOf ? omegaOf[b] : 1.0;
+      const double intact = damage ? 1.0 - damage[b] : 1.0;
+      const double e = dY - zeta[b];
+      // Force state of i on the bond and of j on the reversed bond (pull form: each point sums
+      // only its own list, in global-id order, whatever the rank count), each term as Peridigm
+      // forms it so that two-point cases reproduce its gold results to the last bits.
+      const double ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
+      const double tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      const double vj = volume[j];
+      f0 += ti * Y0 / dY * vj;
+      f1 += ti * Y1 / dY * vj;
+      f2 += ti * Y2 / dY * vj;
+      f0 += tj * Y0 / dY * vj;
+      f1 += tj * Y1 / dY * vj;
+      f2 += tj * Y2 / dY * vj;
     }
-    for (int d = 0; d < 3; ++d) s.forceDensity[3 * i + d] = f[d];
+    s.forceDensity[3 * i] = f0;
+    s.forceDensity[3 * i + 1] = f1;
+    s.forceDensity[3 * i + 2] = f2;
   }
 }
 
@@ -125,7 +143,7 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
       deviatoric += w;
     }
     energyDensity[i] = 0.5 * bulk_[i] * dilatation_[i] * dilatation_[i] +
-                       (mi > 0 ? 0.5 * 15.0 * shear_[i] / mi * deviatoric : 0.0);
+                       (mi > 0 ? 0.5 * alpha_[i] * deviatoric : 0.0);
   }
 }
 

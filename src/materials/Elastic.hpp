@@ -14,7 +14,7 @@ class Elastic : public MaterialModel {
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override {
-    return {kWeightedVolume, kBulkModulus, kShearModulus};
+    return {kWeightedVolume, kAlpha, kBeta, kBulkModulus};
   }
   std::vector<std::string> fieldsToSyncAfterPrecompute() const override { return {kDilatation}; }
   void precompute(const ModelState& state, const std::vector<int>& points) override;
@@ -27,7 +27,9 @@ class Elastic : public MaterialModel {
   static constexpr const char* kWeightedVolume = "Weighted_Volume";
   static constexpr const char* kDilatation = "Dilatation";
   static constexpr const char* kBulkModulus = "LPS_Bulk_Modulus";
-  static constexpr const char* kShearModulus = "LPS_Shear_Modulus";
+  // Per-point constants of the force state: alpha = 15 G / m, beta = 3 K / m - alpha / 3.
+  static constexpr const char* kAlpha = "LPS_Alpha";
+  static constexpr const char* kBeta = "LPS_Beta";
 
  private:
   double density_ = 0;
@@ -35,7 +37,8 @@ class Elastic : public MaterialModel {
   double* weightedVolume_ = nullptr;
   double* dilatation_ = nullptr;
   double* bulk_ = nullptr;   // per point, so bonds across blocks see each end's constants
-  double* shear_ = nullptr;
+  double* alpha_ = nullptr;
+  double* beta_ = nullptr;
 };
 
 }  // namespace peridot

@@ -47,36 +47,29 @@ void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& p
 void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  const double* x = s.x;
   const double* y = s.y;
   const double* c = micromodulus_;
+  const double* volume = s.volume;
+  const double* zeta = s.bondLength;
+  const double* damage = s.bondDamage;
+  const double* omega = s.influence;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
-    const double ci = c[i];
+    const double ci = c[i], yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
-      const double X0 = x[3 * j] - x[3 * i], X1 = x[3 * j + 1] - x[3 * i + 1],
-                   X2 = x[3 * j + 2] - x[3 * i + 2];
-      const double Y0 = y[3 * j] - y[3 * i], Y1 = y[3 * j + 1] - y[3 * i + 1],
-                   Y2 = y[3 * j + 2] - y[3 * i + 2];
-      const double zeta = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-      double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      if (s.influence) intact *= s.influence[b];
-      const double stretch = (dY - zeta) / zeta;
-      // Half the pair force from each end, with each end's micromodulus, summed in the same
-      // order of operations as Peridigm so that small cases reproduce its results to the bit.
-      const double ti = 0.5 * intact * stretch * ci;
-      const double tj = 0.5 * intact * stretch * c[j];
+      const double stretch = (dY - zeta[b]) / zeta[b];
+      // Half the pair force from each end, each with its own micromodulus.
+      double t = 0.5 * (ci + c[j]) * stretch;
+      if (omega) t *= omega[b];
+      if (damage) t *= 1.0 - damage[b];
       // A bond whose ends coincide carries no direction and, by symmetry, no force.
-      if (!(dY > 0)) continue;
-      const double vj = s.volume[j];
-      f0 += ti * Y0 / dY * vj;
-      f1 += ti * Y1 / dY * vj;
-      f2 += ti * Y2 / dY * vj;
-      f0 += tj * Y0 / dY * vj;
-      f1 += tj * Y1 / dY * vj;
-      f2 += tj * Y2 / dY * vj;
+      const double scale = dY > 0 ? t * volume[j] / dY : 0.0;
+      f0 += scale * Y0;
+      f1 += scale * Y1;
+      f2 += scale * Y2;
     }
     s.forceDensity[3 * i] = f0;
     s.forceDensity[3 * i + 1] = f1;

@@ -22,6 +22,7 @@ struct ModelState {
   double* forceDensity = nullptr;      // 3 per point; kernels write owned points only
   const double* bondDamage = nullptr;  // per bond entry; null when no damage model
   const double* influence = nullptr;   // per bond entry; null means omega = 1
+  const double* bondLength = nullptr;  // per bond entry: |xi|, the reference bond length
   double dt = 0.0;
 };
 
