@@ -429,8 +429,14 @@ void Simulation::run() {
     {
       Timers::Scope t(timers_, "Integration");
       for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
+    }
+    {
+      Timers::Scope t(timers_, "Boundary conditions");
       conditions_->applyPrescribedVelocity(next, dt_, v_);
       if (b_) conditions_->applyBodyForce(next, b_, topology_.numOwned);
+    }
+    {
+      Timers::Scope t(timers_, "Integration");
       for (int k = 0; k < n3; ++k) {
         y_[k] = x_[k] + u_[k] + dt_ * v_[k];
         u_[k] += dt_ * v_[k];
