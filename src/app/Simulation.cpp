@@ -99,6 +99,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.rule = neighborhoodRule(config_.discretization);
     options.bondFilters = &config_.discretization.bondFilters;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
+    options.periodic = config_.discretization.periodic;
     topology_ = buildTopology(cloud_, cloudHorizon_, options, comm_);
   }
   if (topology_.globalNumBonds == 0) {
@@ -127,9 +128,12 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   y_ = fields_->node("Coordinates", 3);
   volume_ = fields_->node("Volume", 1);
   double* horizon = fields_->node("Horizon", 1);
+  fields_->markPosition("Model_Coordinates");
+  fields_->markPosition("Coordinates");
   for (int k = 0; k < topology_.numOverlap; ++k) {
     const std::size_t p = topology_.overlapCloudIndex[k];
-    for (int d = 0; d < 3; ++d) x_[3 * k + d] = y_[3 * k + d] = cloud_.x[3 * p + d];
+    const double* shift = topology_.shiftOf(k);  // non-zero for periodic images
+    for (int d = 0; d < 3; ++d) x_[3 * k + d] = y_[3 * k + d] = cloud_.x[3 * p + d] + shift[d];
     volume_[k] = cloud_.volume[p];
     horizon[k] = cloudHorizon_[p];
   }
@@ -181,6 +185,9 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                                                      topology_.overlapGlobalId.data());
   if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
 
+  if (config_.contact.enabled && config_.discretization.periodic.any()) {
+    throw InputError(config_.contact.path, "contact with periodic boundaries is not supported yet");
+  }
   if (config_.contact.enabled) {
     std::vector<std::string> blockName(topology_.numOwned);
     for (int i = 0; i < topology_.numOwned; ++i) blockName[i] = blocks_[blockIndexOfPoint_[i]].name;

@@ -165,6 +165,32 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
     }
     filters.finish();
   }
+  // Periodic boundaries (a Peridot extension): the box is the generator's, or given.
+  const char* axes[3] = {"X", "Y", "Z"};
+  for (int d = 0; d < 3; ++d) c.periodic.periodic[d] = r.boolean(std::string("Periodic ") + axes[d], false);
+  if (c.periodic.any()) {
+    const bool generatorBox = c.generator == DiscretizationConfig::Generator::TensorProduct3D;
+    for (int d = 0; d < 3; ++d) {
+      const std::string lower = std::string("Periodic Box Lower ") + axes[d];
+      const std::string upper = std::string("Periodic Box Upper ") + axes[d];
+      if (generatorBox && !r.has(lower) && !r.has(upper)) {
+        c.periodic.lower[d] = c.origin[d];
+        c.periodic.upper[d] = c.origin[d] + c.length[d];
+      } else if (c.periodic.periodic[d]) {
+        c.periodic.lower[d] = r.number(lower);
+        c.periodic.upper[d] = r.number(upper);
+        if (!(c.periodic.upper[d] > c.periodic.lower[d])) {
+          throw InputError(r.pathOf(upper), std::string("must be larger than Periodic Box Lower ") + axes[d]);
+        }
+      } else {
+        r.number(lower, 0.0);
+        r.number(upper, 0.0);
+      }
+    }
+    if (c.generator == DiscretizationConfig::Generator::Cylinder) {
+      throw InputError(r.pathOf("Periodic X"), "periodic boundaries need a box; the cylinder generator has none");
+    }
+  }
   r.boolean("Verbose", false);
   r.boolean("Store Exodus Mesh", false);
   if (r.has("Construct Neighborhood Lists") && !r.boolean("Construct Neighborhood Lists", true)) {

@@ -24,6 +24,14 @@ struct BondFilter {
   bool cuts(const double* p, const double* q) const;
 };
 
+// Periodic boundaries: along a periodic axis a point near one face is bonded to the images of
+// the points near the opposite face, shifted by the box length.
+struct PeriodicBox {
+  bool periodic[3] = {false, false, false};
+  double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
+  bool any() const { return periodic[0] || periodic[1] || periodic[2]; }
+};
+
 // How neighbours are selected. Exodus and text meshes use the sphere |xi| <= delta (inclusive);
 // PdQuickGrid's default takes every point within +-n cells per axis (a box); with
 // `NeighborhoodType: Spherical` it keeps |xi| < delta (strict).
@@ -48,6 +56,7 @@ struct DiscretizationConfig {
   std::vector<BondFilter> bondFilters;
   std::string influenceFunction = "One";
   std::string generatorPath;
+  PeriodicBox periodic;  // bonds across periodic faces reach the images of the points
 };
 
 // Validates the `Discretization` list (reads every key; unknown keys are errors).

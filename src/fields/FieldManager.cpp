@@ -29,7 +29,7 @@ double* FieldManager::node(const std::string& name, int components) {
   f.ownedView = f.overlap->offsetViewNonConst(owned, 0)->getVectorNonConst(0);
   f.ghostView = f.overlap->offsetViewNonConst(ghost, static_cast<size_t>(topology_.numOwned) *
                                                          components)
-                    ->getVectorNonConst(0);
+                    ->getVectorNonConst(0);  // regular ghosts; periodic images follow them
   f.data = f.overlap->getDataNonConst().getRawPtr();
   return nodeFields_.emplace(name, std::move(f)).first->second.data;
 }
@@ -44,9 +44,20 @@ void FieldManager::refreshGhosts(const std::string& name) {
   auto it = nodeFields_.find(name);
   if (it == nodeFields_.end()) throw std::logic_error("no node field " + name);
   NodeField& f = it->second;
-  if (topology_.numRanks == 1) return;
-  const auto& importer = f.components == 1 ? topology_.ghostImport : topology_.ghostImport3;
-  f.ghostView->doImport(*f.ownedView, *importer, Tpetra::INSERT);
+  if (topology_.numRanks > 1) {
+    const auto& importer = f.components == 1 ? topology_.ghostImport : topology_.ghostImport3;
+    f.ghostView->doImport(*f.ownedView, *importer, Tpetra::INSERT);
+  }
+  // Periodic images copy their real point; positions move with the image's shift.
+  const int c = f.components;
+  const bool position = positionFields_.count(name) > 0;
+  const int first = topology_.numOwned + topology_.numGhosts;
+  for (std::size_t m = 0; m < topology_.imageSource.size(); ++m) {
+    const int source = topology_.imageSource[m], image = first + static_cast<int>(m);
+    for (int d = 0; d < c; ++d) {
+      f.data[c * image + d] = f.data[c * source + d] + (position ? topology_.imageShift[3 * m + d] : 0.0);
+    }
+  }
 }
 
 std::vector<double>& FieldManager::bond(const std::string& name, double initial) {

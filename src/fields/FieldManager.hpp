@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,8 +34,10 @@ class FieldManager {
   double* node(const std::string& name, int components);
   bool hasNode(const std::string& name) const { return nodeFields_.count(name) > 0; }
   const NodeField& nodeField(const std::string& name) const;
-  // Copies owned values to the ghost copies on other ranks.
+  // Copies owned values to the ghost copies on other ranks, and to periodic images.
   void refreshGhosts(const std::string& name);
+  // A position field's periodic images are shifted by the box, not plain copies.
+  void markPosition(const std::string& name) { positionFields_.insert(name); }
 
   // One value per one-sided bond entry, allocated on first request with `initial`.
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
@@ -50,6 +53,7 @@ class FieldManager {
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, double> globals_;
+  std::set<std::string> positionFields_;
 };
 
 }  // namespace peridot

@@ -14,10 +14,21 @@ namespace peridot {
 
 namespace {
 
+// A candidate neighbour: a cloud point, possibly shifted to one of its periodic images. The
+// shift code c in 0..26 stands for (c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1) box lengths.
+constexpr int kNoShift = 13;
+inline unsigned long long packed(std::size_t index, int code) { return index * 27ull + code; }
+inline std::size_t indexOf(unsigned long long key) { return static_cast<std::size_t>(key / 27); }
+inline int codeOf(unsigned long long key) { return static_cast<int>(key % 27); }
+inline void shiftVector(int code, const PeriodicBox& box, double* shift) {
+  const int s[3] = {code % 3 - 1, code / 3 % 3 - 1, code / 9 - 1};
+  for (int d = 0; d < 3; ++d) shift[d] = s[d] * (box.upper[d] - box.lower[d]);
+}
+
 struct LocalLists {
-  std::vector<std::size_t> owned;       // cloud indices, SFC order
-  std::vector<long long> offsets;       // per owned point
-  std::vector<std::size_t> neighbors;   // cloud indices
+  std::vector<std::size_t> owned;           // cloud indices, SFC order
+  std::vector<long long> offsets;           // per owned point
+  std::vector<unsigned long long> neighbors;  // packed (cloud index, shift code)
 };
 
 LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horizon,
@@ -50,24 +61,43 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
     return key[a] != key[b] ? key[a] < key[b] : cloud.globalId[a] < cloud.globalId[b];
   });
 
-  // Candidates: the points that can be within reach of an owned point.
-  std::vector<std::size_t> candidates;
-  for (std::size_t i = 0; i < n; ++i) {
-    bool inside = true;
-    for (int d = 0; d < 3 && inside; ++d)
-      inside = cloud.x[3 * i + d] >= lo[d] - reach && cloud.x[3 * i + d] <= hi[d] + reach;
-    if (inside) candidates.push_back(i);
+  // Candidates: the points, and their periodic images, that can be within reach of an owned
+  // point.
+  std::vector<unsigned long long> candidates;
+  std::vector<double> cx;
+  std::vector<int> codes = {kNoShift};
+  if (opt.periodic.any()) {
+    codes.clear();
+    for (int c = 0; c < 27; ++c) {
+      const int s[3] = {c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1};
+      bool allowed = true;
+      for (int d = 0; d < 3; ++d) allowed = allowed && (s[d] == 0 || opt.periodic.periodic[d]);
+      if (allowed) codes.push_back(c);
+    }
   }
-  std::vector<double> cx(3 * candidates.size()), ch(candidates.size());
+  for (int code : codes) {
+    double shift[3] = {0, 0, 0};
+    shiftVector(code, opt.periodic, shift);
+    for (std::size_t i = 0; i < n; ++i) {
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) {
+        const double xd = cloud.x[3 * i + d] + shift[d];
+        inside = xd >= lo[d] - reach && xd <= hi[d] + reach;
+      }
+      if (!inside) continue;
+      candidates.push_back(packed(i, code));
+      for (int d = 0; d < 3; ++d) cx.push_back(cloud.x[3 * i + d] + shift[d]);
+    }
+  }
+  std::vector<double> ch(candidates.size());
   std::vector<int> cb(candidates.size());
   std::unordered_map<std::size_t, std::size_t> candidateOf;
   candidateOf.reserve(out.owned.size() * 2);
   for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const std::size_t i = candidates[k];
-    for (int d = 0; d < 3; ++d) cx[3 * k + d] = cloud.x[3 * i + d];
+    const std::size_t i = indexOf(candidates[k]);
     ch[k] = horizon[i];
     cb[k] = cloud.blockId[i];
-    if (owner[i] == rank) candidateOf[i] = k;
+    if (owner[i] == rank && codeOf(candidates[k]) == kNoShift) candidateOf[i] = k;
   }
   std::vector<std::size_t> queries;
   queries.reserve(out.owned.size());
@@ -80,8 +110,10 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
-  findNeighbors(in, queries, out.offsets, out.neighbors);
-  for (auto& j : out.neighbors) j = candidates[j];
+  std::vector<std::size_t> found;
+  findNeighbors(in, queries, out.offsets, found);
+  out.neighbors.resize(found.size());
+  for (std::size_t k = 0; k < found.size(); ++k) out.neighbors[k] = candidates[found[k]];
   return out;
 }
 
@@ -110,32 +142,54 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
 
   t.numOwned = static_cast<int>(lists.owned.size());
   t.overlapCloudIndex = lists.owned;
-  // Ghosts: neighbours owned elsewhere, sorted by global id.
+  // Ghosts: neighbours owned elsewhere, and the real points behind periodic images, sorted by
+  // global id. Images come last, sorted by (global id, shift).
   std::vector<std::size_t> ghosts;
-  for (std::size_t j : lists.neighbors)
+  std::vector<unsigned long long> images;
+  for (unsigned long long key : lists.neighbors) {
+    const std::size_t j = indexOf(key);
     if (owner[j] != t.rank) ghosts.push_back(j);
-  std::sort(ghosts.begin(), ghosts.end(), [&](std::size_t a, std::size_t b) {
-    return cloud.globalId[a] < cloud.globalId[b];
-  });
+    if (codeOf(key) != kNoShift) images.push_back(key);
+  }
+  auto byId = [&](std::size_t a, std::size_t b) { return cloud.globalId[a] < cloud.globalId[b]; };
+  std::sort(ghosts.begin(), ghosts.end(), byId);
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+  auto byIdThenShift = [&](unsigned long long a, unsigned long long b) {
+    const long long ga = cloud.globalId[indexOf(a)], gb = cloud.globalId[indexOf(b)];
+    return ga != gb ? ga < gb : codeOf(a) < codeOf(b);
+  };
+  std::sort(images.begin(), images.end(), byIdThenShift);
+  images.erase(std::unique(images.begin(), images.end()), images.end());
   t.overlapCloudIndex.insert(t.overlapCloudIndex.end(), ghosts.begin(), ghosts.end());
+  t.numGhosts = static_cast<int>(ghosts.size());
+  std::vector<int> localOf(n, -1);
+  for (std::size_t k = 0; k < t.overlapCloudIndex.size(); ++k)
+    localOf[t.overlapCloudIndex[k]] = static_cast<int>(k);
+  std::unordered_map<unsigned long long, int> localOfImage;
+  for (unsigned long long key : images) {
+    localOfImage[key] = static_cast<int>(t.overlapCloudIndex.size());
+    t.overlapCloudIndex.push_back(indexOf(key));
+    t.imageSource.push_back(localOf[indexOf(key)]);
+    double shift[3];
+    shiftVector(codeOf(key), opt.periodic, shift);
+    t.imageShift.insert(t.imageShift.end(), shift, shift + 3);
+  }
   t.numOverlap = static_cast<int>(t.overlapCloudIndex.size());
   t.overlapGlobalId.resize(t.numOverlap);
-  std::vector<int> localOf(n, -1);
-  for (int k = 0; k < t.numOverlap; ++k) {
-    t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
-    localOf[t.overlapCloudIndex[k]] = k;
-  }
+  for (int k = 0; k < t.numOverlap; ++k) t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
 
   t.bondOffsets.assign(t.numOwned + 1, 0);
+  std::vector<unsigned long long> sorted(lists.neighbors);
   t.neighbors.resize(lists.neighbors.size());
   for (int i = 0; i < t.numOwned; ++i) {
     const long long b = lists.offsets[i], e = lists.offsets[i + 1];
     t.bondOffsets[i + 1] = e;
-    for (long long k = b; k < e; ++k) t.neighbors[k] = localOf[lists.neighbors[k]];
-    // Fixed summation order: by global id, whatever the rank count.
-    std::sort(t.neighbors.begin() + b, t.neighbors.begin() + e,
-              [&](int a, int c) { return t.overlapGlobalId[a] < t.overlapGlobalId[c]; });
+    // Fixed summation order: by global id (then image), whatever the rank count.
+    std::sort(sorted.begin() + b, sorted.begin() + e, byIdThenShift);
+    for (long long k = b; k < e; ++k) {
+      const unsigned long long key = sorted[k];
+      t.neighbors[k] = codeOf(key) == kNoShift ? localOf[indexOf(key)] : localOfImage.at(key);
+    }
   }
   long long localBonds = static_cast<long long>(t.neighbors.size());
   MPI_Allreduce(&localBonds, &t.globalNumBonds, 1, MPI_LONG_LONG, MPI_SUM, comm);
@@ -143,9 +197,10 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   auto teuchosComm = Teuchos::rcp(new Teuchos::MpiComm<int>(comm));
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   std::vector<GlobalOrdinal> ids(t.overlapGlobalId.begin(), t.overlapGlobalId.begin() + t.numOwned);
-  std::vector<GlobalOrdinal> ghostIds(t.overlapGlobalId.begin() + t.numOwned, t.overlapGlobalId.end());
+  std::vector<GlobalOrdinal> ghostIds(t.overlapGlobalId.begin() + t.numOwned,
+                                      t.overlapGlobalId.begin() + t.numOwned + t.numGhosts);
   auto makeMap = [&](const std::vector<GlobalOrdinal>& gids) {
-    return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(gids), 0, teuchosComm));
+    return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()), 0, teuchosComm));
   };
   auto expand3 = [](const std::vector<GlobalOrdinal>& gids) {
     std::vector<GlobalOrdinal> out(3 * gids.size());
@@ -155,7 +210,6 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   };
   t.ownedMap = makeMap(ids);
   t.ghostMap = makeMap(ghostIds);
-  t.overlapMap = makeMap(t.overlapGlobalId);
   t.ownedMap3 = makeMap(expand3(ids));
   t.ghostMap3 = makeMap(expand3(ghostIds));
   t.ghostImport = Teuchos::rcp(new Import(t.ownedMap, t.ghostMap));

@@ -28,11 +28,21 @@ struct Topology {
   long long globalNumBonds = 0;                // one-sided bond entries, all ranks
   std::vector<GlobalOrdinal> overlapGlobalId;  // per overlap index
   std::vector<std::size_t> overlapCloudIndex;  // per overlap index, index into the PointCloud
+  // Periodic images: overlap indices [numOwned + numGhosts, numOverlap) are copies of a real
+  // point (owned or ghost) shifted by a multiple of the periodic box; refreshed after ghosts.
+  int numGhosts = 0;
+  std::vector<int> imageSource;      // per image: overlap index of the real point
+  std::vector<double> imageShift;    // per image: 3 components
+  const double* shiftOf(int k) const {
+    static const double zero[3] = {0, 0, 0};
+    const int image = k - numOwned - numGhosts;
+    return image >= 0 ? &imageShift[3 * static_cast<std::size_t>(image)] : zero;
+  }
   std::vector<std::int64_t> bondOffsets;       // numOwned + 1
   std::vector<int> neighbors;                  // overlap indices, each list sorted by global id
 
   // Tpetra maps: scalar maps (one entry per point) and vector maps (3 per point: 3*gid + d).
-  Teuchos::RCP<const Map> ownedMap, overlapMap, ghostMap;
+  Teuchos::RCP<const Map> ownedMap, ghostMap;
   Teuchos::RCP<const Map> ownedMap3, ghostMap3;
   Teuchos::RCP<const Import> ghostImport, ghostImport3;
 
@@ -42,6 +52,7 @@ struct Topology {
 
 struct TopologyOptions {
   NeighborhoodRule rule;
+  PeriodicBox periodic;
   const std::vector<BondFilter>* bondFilters = nullptr;
   bool omitBondsBetweenBlocks = false;
   bool weightByBondCount = true;  // second Zoltan pass weighted by bonds per point

@@ -149,3 +149,49 @@ TEST(Topology, WeightedPartitionBalancesBonds) {
 
 }  // namespace
 }  // namespace peridot
+
+namespace peridot {
+namespace {
+
+TEST(Topology, PeriodicImagesMatchMinimumImageBruteForce) {
+  // Periodic in x and y on [0,1)^2 x [0,0.5]: bonds to the images across the faces.
+  PointCloud cloud = randomCloud(1500, 21);
+  std::vector<double> h(cloud.size(), 0.12);
+  TopologyOptions options;
+  options.periodic.periodic[0] = options.periodic.periodic[1] = true;
+  options.periodic.upper[0] = options.periodic.upper[1] = 1.0;
+  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  FieldManager fields(t);
+  double* x = fields.node("Model_Coordinates", 3);
+  fields.markPosition("Model_Coordinates");
+  for (int k = 0; k < t.numOwned; ++k)
+    for (int d = 0; d < 3; ++d) x[3 * k + d] = cloud.x[3 * t.overlapCloudIndex[k] + d];
+  fields.refreshGhosts("Model_Coordinates");
+  long long bonds = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    for (std::size_t j = 0; j < cloud.size(); ++j) {
+      if (i == j) continue;
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        double dx = cloud.x[3 * j + d] - cloud.x[3 * i + d];
+        if (d < 2) dx -= std::round(dx);  // minimum image (the box is 1 wide)
+        d2 += dx * dx;
+      }
+      if (d2 <= 0.12 * 0.12) ++bonds;
+    }
+  EXPECT_EQ(t.globalNumBonds, bonds);
+  // Every bond, image or not, is within the horizon in the refreshed positions.
+  for (int i = 0; i < t.numOwned; ++i)
+    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
+      const int j = t.neighbors[b];
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d) d2 += std::pow(x[3 * j + d] - x[3 * i + d], 2);
+      ASSERT_LE(d2, 0.12 * 0.12 * (1 + 1e-12));
+    }
+  long long images = static_cast<long long>(t.imageSource.size()), total = 0;
+  MPI_Allreduce(&images, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_GT(total, 0);
+}
+
+}  // namespace
+}  // namespace peridot
