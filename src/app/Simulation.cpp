@@ -155,7 +155,6 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   blockIndexOfPoint_.resize(topology_.numOwned);
   density_.resize(topology_.numOwned);
-  bulkModulus_.resize(topology_.numOwned);
   for (int i = 0; i < topology_.numOwned; ++i) {
     const int id = cloud_.blockId[topology_.overlapCloudIndex[i]];
     const int index = static_cast<int>(
@@ -164,7 +163,6 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     blockIndexOfPoint_[i] = index;
     blocks_[index].points.push_back(i);
     density_[i] = blocks_[index].material->density();
-    bulkModulus_[i] = blocks_[index].material->bulkModulus();
   }
 
   evaluator_ = std::make_unique<ModelEvaluator>(topology_, *fields_, blocks_,
@@ -209,7 +207,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   time_ = config_.solver.initialTime;
   throwIfAnyRank(conditions_->applyInitial(time_, u_, v_), comm_);
 
-  stableDt_ = stableTimeStep(topology_, x_, volume_, horizon, density_.data(), bulkModulus_.data());
+  {
+    std::vector<double> stiffness(topology_.numOverlap, 0.0);
+    for (const auto& b : blocks_) b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
+    stableDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
+  }
   const auto& s = config_.solver;
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   // A tiny relative allowance keeps round-off in (final - initial) / dt from dropping a step.

@@ -71,7 +71,7 @@ class Simulation : public VariableSource {
   std::unique_ptr<BoundaryConditions> conditions_;
   std::unique_ptr<OutputManager> outputs_;
   std::unique_ptr<ShortRangeContact> contact_;
-  std::vector<double> density_, bulkModulus_;  // owned
+  std::vector<double> density_;  // owned
   std::vector<int> blockIndexOfPoint_;         // owned -> index in blocks_
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;

@@ -41,6 +41,19 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
   return material;
 }
 
+void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& points,
+                                 double* sum) const {
+  const double pi = 3.14159265358979323846;
+  for (int i : points) {
+    const double d = s.horizon[i];
+    const double c = 18.0 * bulkModulus() / (pi * d * d * d * d);
+    double total = 0;
+    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
+      total += s.volume[s.topology->neighbors[b]] * c / s.bondLength[b];
+    sum[i] = total;
+  }
+}
+
 ElasticConstants readTwoElasticConstants(ListReader& p) {
   const char* keys[4] = {"Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio"};
   int count = 0;

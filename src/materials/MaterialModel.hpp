@@ -45,6 +45,11 @@ class MaterialModel {
   // Stored elastic energy density (per unit volume) of each point in `points`.
   virtual void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                                    double* energyDensity) const = 0;
+  // For the stable time step: sum over the bonds of each point of its bond stiffness (force
+  // density per unit relative displacement). The default is Peridigm's estimate for every
+  // model: the bond-based spring constant 18 K / (pi delta^4) / |xi| times the neighbour volume.
+  virtual void stiffnessSum(const ModelState& state, const std::vector<int>& points,
+                            double* sum) const;
   // Node fields the model maintains that a user may output (e.g. "Dilatation").
   virtual std::vector<std::string> outputFields() const { return {}; }
   // A tag shared by models whose points may be bonded to each other.

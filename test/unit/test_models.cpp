@@ -8,70 +8,14 @@
 #include "evaluator/ModelEvaluator.hpp"
 #include "materials/Elastic.hpp"
 #include "materials/ElasticBondBased.hpp"
+#include "SerialProblem.hpp"
 
 namespace peridot {
 namespace {
 
+using testing::Problem;
+
 const double kPi = 3.14159265358979323846;
-
-// A serial problem: points, one block, a model evaluator.
-struct Problem {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
-  Problem(const std::vector<std::array<double, 3>>& points, double horizon,
-          std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage = nullptr) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      cloud.x.insert(cloud.x.end(), points[i].begin(), points[i].end());
-      cloud.volume.push_back(1.0);
-      cloud.blockId.push_back(1);
-      cloud.globalId.push_back(static_cast<long long>(i));
-    }
-    cloud.blockNames[1] = "block_1";
-    std::vector<double> h(points.size(), horizon);
-    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
-    for (int k = 0; k < topology.numOverlap; ++k) {
-      const std::size_t p = topology.overlapCloudIndex[k];
-      for (int d = 0; d < 3; ++d) x[3 * k + d] = y[3 * k + d] = cloud.x[3 * p + d];
-      v[k] = 1.0;
-      hz[k] = horizon;
-    }
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = std::move(material);
-    b.damage = std::move(damage);
-    for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
-    evaluator->initialize();
-  }
-  // Local index of the point with global id g.
-  int local(long long g) const {
-    for (int k = 0; k < topology.numOwned; ++k)
-      if (topology.overlapGlobalId[k] == g) return k;
-    return -1;
-  }
-  void move(long long g, double dx, double dy, double dz) {
-    double* y = fields->node("Coordinates", 3);
-    const int k = local(g);
-    y[3 * k] += dx;
-    y[3 * k + 1] += dy;
-    y[3 * k + 2] += dz;
-  }
-  const double* force(long long g) const {
-    return fields->nodeField("Force_Density").data + 3 * local(g);
-  }
-};
 
 std::shared_ptr<MaterialModel> pmb(double K) {
   Teuchos::ParameterList p;

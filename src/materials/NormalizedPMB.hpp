@@ -1,0 +1,33 @@
+#pragma once
+// Normalized PMB (Ganzenmueller, Hiermaier and May; paper 000, eqs. 13-17): the micromodulus of
+// each point comes from the same Riemann sum that integrates the forces, c_i = 18 K / sum_j V_j
+// (3D), so that a homogeneous dilatation gives exactly W = 9 K s^2 / 2 at every point, surface
+// and mixed particle sizes or horizons included. Pair constant c_ij = (c_i + c_j) / 2; force
+// density on i: sum_j c_ij s_ij / |xi_ij| e_ij V_j; energy density W_i = 1/4 sum_j c_ij s_ij^2 V_j.
+#include "materials/MaterialModel.hpp"
+
+namespace peridot {
+
+class NormalizedPMB : public MaterialModel {
+ public:
+  explicit NormalizedPMB(ListReader& params);
+  double density() const override { return density_; }
+  double bulkModulus() const override { return bulkModulus_; }
+  void declareFields(FieldManager& fields) override;
+  void initialize(const ModelState& state, const std::vector<int>& points) override;
+  std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }
+  void computeForce(const ModelState& state, const std::vector<int>& points) override;
+  void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
+                           double* energyDensity) const override;
+  void stiffnessSum(const ModelState& state, const std::vector<int>& points,
+                    double* sum) const override;
+  std::string family() const override { return "normalized PMB"; }
+
+  static constexpr const char* kMicromodulus = "Normalized_PMB_Micromodulus";
+
+ private:
+  double density_ = 0, bulkModulus_ = 0;
+  double* micromodulus_ = nullptr;
+};
+
+}  // namespace peridot
