@@ -150,7 +150,20 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     b.materialName = group.material;
     b.damageName = group.damageModel;
     b.material = config_.materials.at(group.material);
-    if (!group.damageModel.empty()) b.damage = config_.damageModels.at(group.damageModel);
+    if (!group.damageModel.empty()) {
+      b.damage = config_.damageModels.at(group.damageModel);
+      if (b.damage->bindsToBlock()) {
+        // A copy of its own, bound to this block's material and (constant) horizon.
+        ListReader params(config_.damageParameters.at(group.damageModel),
+                          "Damage Models -> " + group.damageModel);
+        b.damage = createDamageModel(params);
+        Expression horizonOfBlock(group.horizon, {"x", "y", "z"}, group.path + " -> Horizon");
+        std::ostringstream derived;
+        b.damage->bind(*b.material, horizonOfBlock.isConstant() ? horizonOfBlock.evaluate(nullptr) : -1.0,
+                       b.name, derived);
+        if (rank_ == 0) log_ << derived.str();
+      }
+    }
     blocks_.push_back(b);
   }
   blockIndexOfPoint_.resize(topology_.numOwned);

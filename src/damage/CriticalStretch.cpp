@@ -6,13 +6,39 @@
 
 namespace peridot {
 
-CriticalStretch::CriticalStretch(ListReader& p) {
-  criticalStretch_ = p.positiveNumber("Critical Stretch");
+CriticalStretch::CriticalStretch(ListReader& p) : path_(p.path()) {
+  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
+    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
+  }
+  if (p.has("Critical Stretch")) {
+    criticalStretch_ = p.positiveNumber("Critical Stretch");
+  } else {
+    fractureEnergy_ = p.positiveNumber("Fracture Energy");
+  }
   if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
     throw InputError(p.pathOf("Thermal Expansion Coefficient"),
                      "thermal strains are not supported by Peridot yet");
   }
   p.boolean("Verbose", false);
+}
+
+void CriticalStretch::bind(const MaterialModel& material, double horizon,
+                           const std::string& blockName, std::ostream& log) {
+  if (fractureEnergy_ <= 0) return;
+  if (material.family() != "bond-based") {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "the critical stretch can be derived from the fracture energy for the 3D "
+                     "\"Elastic Bond Based\" material only so far (block " + blockName +
+                         " uses a " + material.family() + " material); give Critical Stretch");
+  }
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  // Silling and Askari (2005), 3D PMB: G0 = pi c s_c^2 delta^5 / 10 with c = 18 K / (pi delta^4).
+  criticalStretch_ = std::sqrt(5.0 * fractureEnergy_ / (9.0 * material.bulkModulus() * horizon));
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (3D PMB, sqrt(5 G0 / (9 K delta)))\n";
 }
 
 void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>& points,
@@ -37,7 +63,9 @@ void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>&
 PERIDOT_REGISTER_DAMAGE("Critical Stretch", CriticalStretch,
                         "Bonds break irreversibly when their stretch exceeds the critical stretch",
                         (std::vector<ParameterDoc>{
-                            {"Critical Stretch", "positive number, required: s_c"},
+                            {"Critical Stretch", "positive number: s_c (or give Fracture Energy)"},
+                            {"Fracture Energy", "positive number: G0, from which s_c is derived "
+                                                "per block (3D PMB: sqrt(5 G0 / (9 K delta)))"},
                             {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
                             {"Verbose", "bool, default false"}}))
 

@@ -11,9 +11,15 @@ class CriticalStretch : public DamageModel {
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      double* bondDamage) override;
   double criticalStretch() const { return criticalStretch_; }
+  bool bindsToBlock() const override { return fractureEnergy_ > 0; }
+  // With `Fracture Energy`, derives the critical stretch from the block's material and horizon.
+  void bind(const MaterialModel& material, double horizon, const std::string& blockName,
+            std::ostream& log) override;
 
  private:
   double criticalStretch_ = 0;
+  double fractureEnergy_ = 0;  // G0, when given instead of the critical stretch
+  std::string path_;
 };
 
 }  // namespace peridot

@@ -2,6 +2,7 @@
 // Interface of a damage model: updates the bond damage (0 intact .. 1 broken) of a block's
 // owned points before the material computes forces.
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,11 @@ class DamageModel {
   virtual ~DamageModel() = default;
   virtual void computeDamage(const ModelState& state, const std::vector<int>& points,
                              double* bondDamage) = 0;
+  // Models whose parameters depend on the block (material, horizon) get one instance per block
+  // and are bound to it before the run; `log` receives what was derived (rank 0 prints it).
+  virtual bool bindsToBlock() const { return false; }
+  virtual void bind(const MaterialModel& /*material*/, double /*horizon*/,
+                    const std::string& /*blockName*/, std::ostream& /*log*/) {}
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -215,6 +215,7 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
     for (const auto& name : damage.keys()) {
       ListReader d = damage.sublist(name);
       config.damageModels[name] = createDamageModel(d);
+      config.damageParameters[name] = d.list();
     }
     damage.finish();
   }

@@ -57,6 +57,7 @@ struct RunConfig {
   DiscretizationConfig discretization;
   std::map<std::string, std::shared_ptr<MaterialModel>> materials;
   std::map<std::string, std::shared_ptr<DamageModel>> damageModels;
+  std::map<std::string, Teuchos::ParameterList> damageParameters;  // to make per-block copies
   std::vector<BlockGroupConfig> blocks;
   std::vector<NodeSetSpec> nodeSets;
   std::vector<ConditionConfig> conditions;

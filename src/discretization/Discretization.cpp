@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "deck/Expression.hpp"
 #include "discretization/ExodusMeshReader.hpp"
 
 namespace peridot {
@@ -153,6 +154,14 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
     c.omitBondsBetweenBlocks = r.choice("Omit Bonds Between Blocks", {"None", "All"}) == "All";
   }
   c.influenceFunction = r.has("Influence Function") ? r.string("Influence Function") : "One";
+  {
+    const auto& f = c.influenceFunction;
+    if (f != "One" && f != "Parabolic Decay" && f != "Gaussian" && f != "Conical" &&
+        f != "Conical Over Zeta") {
+      // Anything else is an expression in zeta and horizon: check it now.
+      Expression check(f, {"zeta", "horizon"}, r.pathOf("Influence Function"));
+    }
+  }
   if (r.isSublist("Bond Filters")) {
     if (c.type == "PdQuickGrid") {
       throw InputError(r.pathOf("Bond Filters"),

@@ -49,8 +49,11 @@ void ModelEvaluator::initialize() {
     const int* nb = topology_.neighbors.data();
     const bool parabolic = influenceFunction_ == "Parabolic Decay";
     const bool gaussian = influenceFunction_ == "Gaussian";
+    // Conical kernels of papers 001 and 002: 1 - zeta/delta, and that over zeta.
+    const bool conical = influenceFunction_ == "Conical";
+    const bool conicalOverZeta = influenceFunction_ == "Conical Over Zeta";
     std::unique_ptr<Expression> expr;
-    if (!parabolic && !gaussian) {
+    if (!parabolic && !gaussian && !conical && !conicalOverZeta) {
       expr = std::make_unique<Expression>(influenceFunction_, std::vector<std::string>{"zeta", "horizon"},
                                           "Discretization -> Influence Function");
     }
@@ -68,6 +71,10 @@ void ModelEvaluator::initialize() {
           omega[b] = r < 0.5 ? 1.0 : -4.0 * r * r + 4.0 * r;
         } else if (gaussian) {
           omega[b] = std::exp(-z2 / (0.16 * delta * delta));
+        } else if (conical) {
+          omega[b] = 1.0 - r;
+        } else if (conicalOverZeta) {
+          omega[b] = (1.0 - r) / zeta;
         } else {
           const double vars[2] = {zeta, delta};
           omega[b] = expr->evaluate(vars);

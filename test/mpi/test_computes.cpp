@@ -95,6 +95,8 @@ TEST(Computes, InfluenceFunctionsScaleTheWeightedVolume) {
       {"Gaussian", expected([&](double z) { return std::exp(-z * z / (0.16 * delta * delta)); })},
       {"1.0/zeta", expected([](double z) { return 1.0 / z; })},
       {"1 - zeta/horizon", expected([&](double z) { return 1 - z / delta; })},
+      {"Conical", expected([&](double z) { return 1 - z / delta; })},
+      {"Conical Over Zeta", expected([&](double z) { return (1 - z / delta) / z; })},
   };
   for (const auto& c : cases) {
     auto sim = build("    Influence Function: \"" + c.deckValue + "\"\n",

@@ -3,7 +3,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
+#include <sstream>
 
+#include "core/Error.hpp"
 #include "damage/CriticalStretch.hpp"
 #include "evaluator/ModelEvaluator.hpp"
 #include "materials/Elastic.hpp"
@@ -180,6 +182,29 @@ TEST(CriticalStretch, BreaksInTensionOnlyAndForever) {
   pr.evaluator->evaluate(1.0);
   pr.evaluator->nodeDamage(nodeDamage.data());
   EXPECT_DOUBLE_EQ(nodeDamage[pr.local(1)], 1.0);
+}
+
+}  // namespace
+}  // namespace peridot
+
+namespace peridot {
+namespace {
+
+TEST(CriticalStretch, FromFractureEnergyFor3DPMB) {
+  Teuchos::ParameterList p;
+  p.set("Damage Model", "Critical Stretch");
+  p.set("Fracture Energy", 12.0);
+  ListReader r(p, "Damage Models -> CS");
+  auto damage = createDamageModel(r);
+  ASSERT_TRUE(damage->bindsToBlock());
+  std::ostringstream log;
+  const double K = 50.0, delta = 1.5;
+  damage->bind(*pmb(K), delta, "block_1", log);
+  const double expected = std::sqrt(5.0 * 12.0 / (9.0 * K * delta));
+  EXPECT_DOUBLE_EQ(static_cast<CriticalStretch&>(*damage).criticalStretch(), expected);
+  EXPECT_NE(log.str().find("block_1"), std::string::npos);
+  // LPS has no formula here yet: a clear error, not a silent default.
+  EXPECT_THROW(damage->bind(*lps(1.0, 1.0), delta, "block_2", log), InputError);
 }
 
 }  // namespace
