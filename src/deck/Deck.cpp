@@ -83,6 +83,14 @@ void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path) {
   }
 }
 
+// YAML decks put everything under a top-level `Peridigm:` key.
+Teuchos::RCP<Teuchos::ParameterList> withoutPeridigmWrapper(Teuchos::RCP<Teuchos::ParameterList> deck) {
+  if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
+    return Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
+  }
+  return deck;
+}
+
 }  // namespace
 
 std::string joinPath(const std::string& path, const std::string& key) {
@@ -148,12 +156,7 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
     throw InputError("cannot parse deck file \"" + fileName + "\" as " +
                      (yaml ? "YAML" : "XML") + ": " + last);
   }
-  // Teuchos' YAML reader returns the top-level `Peridigm:` map's content as the list itself in
-  // some versions and as a sublist in others.
-  if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
-    deck = Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
-  }
-  return deck;
+  return withoutPeridigmWrapper(deck);
 }
 
 Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& format) {
@@ -164,10 +167,7 @@ Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const st
   } catch (const std::exception& e) {
     throw InputError(std::string("cannot parse deck text: ") + e.what());
   }
-  if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
-    deck = Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
-  }
-  return deck;
+  return withoutPeridigmWrapper(deck);
 }
 
 ListReader::ListReader(const Teuchos::ParameterList& list, std::string path)
@@ -298,19 +298,9 @@ std::string ListReader::choice(const std::string& key, const std::vector<std::st
 
 std::string ListReader::numberOrExpression(const std::string& key) {
   const auto& e = entry(key);
-  if (e.isList()) throw InputError(pathOf(key), "expected a number or an expression, got a list");
   if (e.isType<std::string>()) return Teuchos::getValue<std::string>(e);
-  std::ostringstream s;
-  if (e.isType<double>()) {
-    s << formatNumber(Teuchos::getValue<double>(e));
-  } else if (e.isType<int>()) {
-    s << Teuchos::getValue<int>(e);
-  } else if (e.isType<long long>()) {
-    s << Teuchos::getValue<long long>(e);
-  } else {
-    throw InputError(pathOf(key), "expected a number or an expression, got " + describeEntry(e));
-  }
-  return s.str();
+  if (e.isType<double>() || e.isType<int>() || e.isType<long long>()) return describeEntry(e);
+  throw InputError(pathOf(key), "expected a number or an expression, got " + describeEntry(e));
 }
 
 ListReader ListReader::sublist(const std::string& key) {

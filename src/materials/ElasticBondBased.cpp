@@ -12,18 +12,7 @@ const double kPi = 3.14159265358979323846;
 
 ElasticBondBased::ElasticBondBased(ListReader& p) {
   density_ = p.positiveNumber("Density");
-  const bool hasK = p.has("Bulk Modulus"), hasE = p.has("Young's Modulus");
-  for (const char* k : {"Shear Modulus", "Poisson's Ratio"}) {
-    if (p.has(k)) {
-      throw InputError(p.pathOf(k), "a bond-based material has one elastic constant (Poisson's "
-                                    "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
-    }
-  }
-  if (hasK == hasE) {
-    throw InputError(p.path(), "give exactly one of \"Bulk Modulus\" and \"Young's Modulus\"");
-  }
-  // nu = 1/4 in 3D: K = E / (3 (1 - 2 nu)) = 2E/3.
-  bulkModulus_ = hasK ? p.positiveNumber("Bulk Modulus") : p.positiveNumber("Young's Modulus") * 2.0 / 3.0;
+  bulkModulus_ = readBondBasedBulkModulus(p);
   for (const char* k : {"Plane Strain", "Plane Stress"}) {
     if (p.has(k) && p.boolean(k, false)) {
       throw InputError(p.pathOf(k), "2D bond-based models are not supported by Peridot yet");

@@ -9,36 +9,34 @@
 namespace peridot {
 
 std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
-  const std::string model = params.string("Material Model");
-  const auto* entry = MaterialRegistry::find(model);
-  if (!entry) {
-    std::string known;
-    for (const auto& n : MaterialRegistry::names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-    throw InputError(params.pathOf("Material Model"),
-                     "unknown material model \"" + model + "\"; Peridot knows " + known);
-  }
   if (params.has("Horizon")) {
     throw InputError(params.pathOf("Horizon"),
                      "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
   }
-  // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
-  static const char* common[] = {"Material Model", "Density", "Bulk Modulus", "Shear Modulus",
-                                 "Young's Modulus", "Poisson's Ratio", "Verbose",
-                                 "Finite Difference Probe Length",
-                                 "Apply Automatic Differentiation Jacobian",
-                                 "Apply Shear Correction Factor", "Thermal Expansion Coefficient",
-                                 "Compute Partial Stress"};
-  for (const auto& key : params.keys()) {
-    bool known = std::find(std::begin(common), std::end(common), key) != std::end(common);
-    for (const auto& doc : entry->parameters) known = known || doc.name == key;
-    if (!known) {
-      throw InputError(params.pathOf(key), "unknown parameter of material model \"" + model +
-                                               "\" (peridot --help-model \"" + model + "\" lists them)");
-    }
-  }
-  auto material = entry->create(params);
+  // Keys every material accepts (elastic constants are checked by the model).
+  static const std::vector<std::string> common = {
+      "Density", "Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio", "Verbose",
+      "Finite Difference Probe Length", "Apply Automatic Differentiation Jacobian",
+      "Apply Shear Correction Factor", "Thermal Expansion Coefficient", "Compute Partial Stress"};
+  const auto& entry = MaterialRegistry::lookup(params, "Material Model", "material model", common);
+  auto material = entry.create(params);
   params.finish();
   return material;
+}
+
+double readBondBasedBulkModulus(ListReader& p) {
+  for (const char* k : {"Shear Modulus", "Poisson's Ratio"}) {
+    if (p.has(k)) {
+      throw InputError(p.pathOf(k), "a bond-based material has one elastic constant (Poisson's "
+                                    "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
+    }
+  }
+  if (p.has("Bulk Modulus") == p.has("Young's Modulus")) {
+    throw InputError(p.path(), "give exactly one of \"Bulk Modulus\" and \"Young's Modulus\"");
+  }
+  // nu = 1/4 in 3D: K = E / (3 (1 - 2 nu)) = 2E/3.
+  return p.has("Bulk Modulus") ? p.positiveNumber("Bulk Modulus")
+                               : p.positiveNumber("Young's Modulus") * 2.0 / 3.0;
 }
 
 void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& points,

@@ -68,6 +68,10 @@ struct ElasticConstants {
 };
 ElasticConstants readTwoElasticConstants(ListReader& params);
 
+// The one elastic constant of a 3D bond-based material, as its bulk modulus (Bulk Modulus, or
+// Young's Modulus with Poisson's ratio 1/4); other constants are errors.
+double readBondBasedBulkModulus(ListReader& params);
+
 // Keys every material accepts and ignores or checks (Peridigm compatibility).
 void acceptCommonMaterialKeys(ListReader& params);
 

@@ -8,17 +8,7 @@ namespace peridot {
 
 NormalizedPMB::NormalizedPMB(ListReader& p) {
   density_ = p.positiveNumber("Density");
-  const bool hasK = p.has("Bulk Modulus"), hasE = p.has("Young's Modulus");
-  for (const char* k : {"Shear Modulus", "Poisson's Ratio"}) {
-    if (p.has(k)) {
-      throw InputError(p.pathOf(k), "a bond-based material has one elastic constant (Poisson's "
-                                    "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
-    }
-  }
-  if (hasK == hasE) {
-    throw InputError(p.path(), "give exactly one of \"Bulk Modulus\" and \"Young's Modulus\"");
-  }
-  bulkModulus_ = hasK ? p.positiveNumber("Bulk Modulus") : p.positiveNumber("Young's Modulus") * 2.0 / 3.0;
+  bulkModulus_ = readBondBasedBulkModulus(p);
   acceptCommonMaterialKeys(p);
 }
 
