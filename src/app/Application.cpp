@@ -1,13 +1,12 @@
 #include "app/Application.hpp"
 
 #include <Tpetra_Core.hpp>
-
 #include <chrono>
 #include <cstring>
-#include <thread>
 #include <exception>
 #include <iostream>
 #include <string>
+#include <thread>
 
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
@@ -44,7 +43,8 @@ bool describe(const std::string& name, const char* kind) {
   const auto* entry = R::find(name);
   if (!entry) return false;
   std::cout << kind << " \"" << name << "\": " << entry->summary << "\nParameters:\n";
-  for (const auto& p : entry->parameters) std::cout << "  " << p.name << ": " << p.description << "\n";
+  for (const auto& p : entry->parameters)
+    std::cout << "  " << p.name << ": " << p.description << "\n";
   return true;
 }
 
@@ -132,7 +132,8 @@ int runApplication(int argc, char** argv) {
     status = 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "peridot: error: out of memory on rank " << rank
-              << " (the problem is too large for this machine; use more ranks or nodes)" << std::endl;
+              << " (the problem is too large for this machine; use more ranks or nodes)"
+              << std::endl;
     status = 3;
   } catch (const std::exception& e) {
     std::cerr << "peridot: internal error: " << e.what() << std::endl;

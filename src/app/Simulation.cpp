@@ -27,7 +27,8 @@ std::string formatSeconds(double s) {
   } else if (s < 3600) {
     out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
   } else {
-    out << static_cast<int>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60) << " min";
+    out << static_cast<int>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
+        << " min";
   }
   return out.str();
 }
@@ -159,7 +160,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
         b.damage = createDamageModel(params);
         Expression horizonOfBlock(group.horizon, {"x", "y", "z"}, group.path + " -> Horizon");
         std::ostringstream derived;
-        b.damage->bind(*b.material, horizonOfBlock.isConstant() ? horizonOfBlock.evaluate(nullptr) : -1.0,
+        b.damage->bind(*b.material,
+                       horizonOfBlock.isConstant() ? horizonOfBlock.evaluate(nullptr) : -1.0,
                        b.name, derived);
         if (rank_ == 0) log_ << derived.str();
       }
@@ -189,7 +191,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   for (const auto& kv : nodeSetIds_) {
     if (kv.second.empty()) {
       for (const auto& c : config_.conditions)
-        if (c.nodeSet == kv.first) throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
+        if (c.nodeSet == kv.first)
+          throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
     }
   }
   conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_,
@@ -204,7 +207,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     for (int i = 0; i < topology_.numOwned; ++i) blockName[i] = blocks_[blockIndexOfPoint_[i]].name;
     for (const auto& pair : config_.contact.pairs) {
       for (const auto& name : {pair.first, pair.second}) {
-        if (!std::any_of(blocks_.begin(), blocks_.end(), [&](const Block& b) { return b.name == name; })) {
+        if (!std::any_of(blocks_.begin(), blocks_.end(),
+                         [&](const Block& b) { return b.name == name; })) {
           throw InputError(config_.contact.path + " -> Interactions",
                            "unknown block \"" + name + "\"");
         }
@@ -222,7 +226,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 
   {
     std::vector<double> stiffness(topology_.numOverlap, 0.0);
-    for (const auto& b : blocks_) b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
+    for (const auto& b : blocks_)
+      b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
     stableDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
   }
   const auto& s = config_.solver;
@@ -234,7 +239,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
-  outputs_ = std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
+  outputs_ =
+      std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
 }
 
 Simulation::~Simulation() = default;
@@ -276,7 +282,9 @@ void Simulation::nodeVariable(const std::string& name, std::vector<double>& out)
   const int n = topology_.numOwned;
   const int c = components(name);
   out.assign(static_cast<std::size_t>(n) * c, 0.0);
-  auto copy = [&](const double* src) { std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin()); };
+  auto copy = [&](const double* src) {
+    std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin());
+  };
   if (name == "Volume") {
     copy(volume_);
   } else if (name == "Horizon") {
@@ -314,7 +322,8 @@ void Simulation::nodeVariable(const std::string& name, std::vector<double>& out)
     copy(fields_->node(name, 1));
   } else if (name == "Kinetic_Energy") {
     for (int i = 0; i < n; ++i) {
-      const double v2 = v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
+      const double v2 =
+          v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
       out[i] = 0.5 * density_[i] * volume_[i] * v2;
     }
   } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density") {
@@ -332,7 +341,7 @@ double Simulation::sumOver(const std::vector<int>* points, const std::string& va
   std::vector<double> values;
   nodeVariable(variable, values);
   const int c = components(variable);
-  double result = calculation == "Sum" ? 0.0
+  double result = calculation == "Sum"       ? 0.0
                   : calculation == "Minimum" ? std::numeric_limits<double>::max()
                                              : std::numeric_limits<double>::lowest();
   auto take = [&](int i) {
@@ -421,8 +430,9 @@ void Simulation::checkFinite(long long step, double time) {
 void Simulation::run() {
   const auto& s = config_.solver;
   if (rank_ == 0) {
-    log_ << "Points: " << topology_.globalNumPoints << ", bonds (one-sided): " << topology_.globalNumBonds
-         << ", ranks: " << topology_.numRanks << "\n";
+    log_ << "Points: " << topology_.globalNumPoints
+         << ", bonds (one-sided): " << topology_.globalNumBonds << ", ranks: " << topology_.numRanks
+         << "\n";
     log_ << "Stable time step estimate: " << stableDt_ << "\n";
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";
@@ -476,7 +486,8 @@ void Simulation::run() {
     if (observer_) observer_(step, time_);
     if (rank_ == 0) {
       const auto now = std::chrono::steady_clock::now();
-      if (std::chrono::duration<double>(now - lastReport).count() > 5.0 || (step == numSteps_ && std::chrono::duration<double>(now - start).count() > 5.0)) {
+      if (std::chrono::duration<double>(now - lastReport).count() > 5.0 ||
+          (step == numSteps_ && std::chrono::duration<double>(now - start).count() > 5.0)) {
         lastReport = now;
         const double elapsed = std::chrono::duration<double>(now - start).count();
         const double left = elapsed / step * (numSteps_ - step);

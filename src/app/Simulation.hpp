@@ -71,14 +71,13 @@ class Simulation : public VariableSource {
   std::unique_ptr<BoundaryConditions> conditions_;
   std::unique_ptr<OutputManager> outputs_;
   std::unique_ptr<ShortRangeContact> contact_;
-  std::vector<double> density_;  // owned
-  std::vector<int> blockIndexOfPoint_;         // owned -> index in blocks_
+  std::vector<double> density_;         // owned
+  std::vector<int> blockIndexOfPoint_;  // owned -> index in blocks_
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;
   std::function<void(long long, double)> observer_;
-  double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr,
-         *f_ = nullptr, *b_ = nullptr, *volume_ = nullptr,
-         *fc_ = nullptr;
+  double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr, *f_ = nullptr,
+         *b_ = nullptr, *volume_ = nullptr, *fc_ = nullptr;
 };
 
 }  // namespace peridot

@@ -39,12 +39,14 @@ std::string BoundaryConditions::applyInitial(double t0, double* u, double* v) {
   auto check = [&](const Condition& c, int p, double value) {
     if (std::isfinite(value) || !message.empty()) return;
     message = c.config.path + " -> Value: the expression gives " + std::to_string(value) +
-              " at point " + std::to_string(pointIds_[p] + 1) + " (x = " + std::to_string(x_[3 * p]) +
-              ", y = " + std::to_string(x_[3 * p + 1]) + ", z = " + std::to_string(x_[3 * p + 2]) + ")";
+              " at point " + std::to_string(pointIds_[p] + 1) +
+              " (x = " + std::to_string(x_[3 * p]) + ", y = " + std::to_string(x_[3 * p + 1]) +
+              ", z = " + std::to_string(x_[3 * p + 2]) + ")";
   };
   for (auto& c : conditions_) {
     const int d = c.config.coordinate;
-    if (c.config.kind == Kind::InitialDisplacement || c.config.kind == Kind::PrescribedDisplacement) {
+    if (c.config.kind == Kind::InitialDisplacement ||
+        c.config.kind == Kind::PrescribedDisplacement) {
       if (c.config.kind == Kind::PrescribedDisplacement) c.previous.resize(c.points.size());
       for (std::size_t k = 0; k < c.points.size(); ++k) {
         const double value = evaluate(c, c.points[k], t0);

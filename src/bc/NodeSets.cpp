@@ -44,7 +44,8 @@ std::vector<long long> readIds(const std::string& text, const std::string& path,
       }
       if (id < 1 || id > numPoints) {
         throw InputError(path, source + ": point id " + w + " is out of range (ids are 1-based, " +
-                                   "the discretization has " + std::to_string(numPoints) + " points)");
+                                   "the discretization has " + std::to_string(numPoints) +
+                                   " points)");
       }
       ids.push_back(id - 1);
     }
@@ -54,15 +55,16 @@ std::vector<long long> readIds(const std::string& text, const std::string& path,
 
 }  // namespace
 
-std::map<std::string, std::vector<long long>> collectNodeSets(const PointCloud& cloud,
-                                                              const std::vector<NodeSetSpec>& specs) {
+std::map<std::string, std::vector<long long>> collectNodeSets(
+    const PointCloud& cloud, const std::vector<NodeSetSpec>& specs) {
   std::map<std::string, std::vector<long long>> sets;
   long long maxId = 0;
   for (long long g : cloud.globalId) maxId = std::max(maxId, g + 1);
   for (const auto& ps : cloud.pointSets) sets[ps.name] = ps.globalIds;
   for (const auto& spec : specs) {
     if (sets.count(spec.name)) {
-      throw InputError(spec.path, "a node set named \"" + spec.name + "\" already exists in the mesh");
+      throw InputError(spec.path,
+                       "a node set named \"" + spec.name + "\" already exists in the mesh");
     }
     std::vector<long long> ids;
     if (spec.value.find_first_not_of(" \t\r\n") == std::string::npos) {
@@ -76,8 +78,8 @@ std::map<std::string, std::vector<long long>> collectNodeSets(const PointCloud& 
       fileName.erase(fileName.find_last_not_of(" \t") + 1);
       std::ifstream in(fileName);
       if (!in) {
-        throw InputError(spec.path, "\"" + spec.value +
-                                        "\" is neither a list of point ids nor a readable file");
+        throw InputError(
+            spec.path, "\"" + spec.value + "\" is neither a list of point ids nor a readable file");
       }
       std::stringstream text;
       text << in.rdbuf();
@@ -95,7 +97,8 @@ std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,
                              const std::vector<long long>& ownedGlobalIds) {
   std::unordered_map<long long, int> localOf;
   localOf.reserve(ownedGlobalIds.size() * 2);
-  for (std::size_t i = 0; i < ownedGlobalIds.size(); ++i) localOf[ownedGlobalIds[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < ownedGlobalIds.size(); ++i)
+    localOf[ownedGlobalIds[i]] = static_cast<int>(i);
   std::vector<int> out;
   for (long long g : setGlobalIds) {
     auto it = localOf.find(g);

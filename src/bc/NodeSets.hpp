@@ -12,8 +12,8 @@ namespace peridot {
 
 // Global (0-based) ids of every named set, mesh sets first; deck sets override nothing: a
 // name defined twice is an error.
-std::map<std::string, std::vector<long long>> collectNodeSets(const PointCloud& cloud,
-                                                              const std::vector<NodeSetSpec>& specs);
+std::map<std::string, std::vector<long long>> collectNodeSets(
+    const PointCloud& cloud, const std::vector<NodeSetSpec>& specs);
 
 // Owned local indices of a set's points, given the owned global ids (local index = position).
 std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,

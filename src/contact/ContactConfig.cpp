@@ -12,14 +12,17 @@ ContactConfig readContactConfig(ListReader c) {
   cc.searchRadius = c.positiveNumber("Search Radius");
   cc.searchFrequency = c.integer("Search Frequency");
   if (cc.searchFrequency < 1) {
-    throw InputError(c.pathOf("Search Frequency"), "expected a positive integer (steps between searches)");
+    throw InputError(c.pathOf("Search Frequency"),
+                     "expected a positive integer (steps between searches)");
   }
   c.boolean("Verbose", false);
   ListReader models = c.sublist("Models");
   const auto names = models.keys();
   if (names.size() != 1) {
-    throw InputError(models.path(), "Peridot supports exactly one contact model (Peridigm uses only "
-                                    "the first); got " + std::to_string(names.size()));
+    throw InputError(models.path(),
+                     "Peridot supports exactly one contact model (Peridigm uses only "
+                     "the first); got " +
+                         std::to_string(names.size()));
   }
   cc.modelName = names[0];
   ListReader m = models.sublist(cc.modelName);
@@ -30,8 +33,8 @@ ContactConfig readContactConfig(ListReader c) {
   m.finish();
   models.finish();
   if (cc.contactRadius > cc.searchRadius) {
-    throw InputError(c.pathOf("Search Radius"),
-                     "must be at least the Contact Radius (" + formatNumber(cc.contactRadius) + ")");
+    throw InputError(c.pathOf("Search Radius"), "must be at least the Contact Radius (" +
+                                                    formatNumber(cc.contactRadius) + ")");
   }
   ListReader interactions = c.sublist("Interactions");
   for (const auto& name : interactions.keys()) {

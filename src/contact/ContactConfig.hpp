@@ -15,7 +15,7 @@ struct ContactConfig {
   long long searchFrequency = 1;
   std::string modelName;
   double contactRadius = 0, springConstant = 0, frictionCoefficient = 0;
-  bool generalContact = false;                        // every pair of points, any blocks
+  bool generalContact = false;                          // every pair of points, any blocks
   std::set<std::pair<std::string, std::string>> pairs;  // block-name pairs (sorted) otherwise
   std::string path;
   bool interacts(const std::string& a, const std::string& b) const {

@@ -2,7 +2,6 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Vector.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -55,9 +54,9 @@ inline bool pairForce(const double* yi, const double* yj, const double* vi, cons
   const double normRelJ = std::sqrt(relJ[0] * relJ[0] + relJ[1] * relJ[1] + relJ[2] * relJ[2]);
   const double fI = std::sqrt(out.onNode[0] * out.onNode[0] + out.onNode[1] * out.onNode[1] +
                               out.onNode[2] * out.onNode[2]);
-  const double fJ = std::sqrt(out.onNeighbor[0] * out.onNeighbor[0] +
-                              out.onNeighbor[1] * out.onNeighbor[1] +
-                              out.onNeighbor[2] * out.onNeighbor[2]);
+  const double fJ =
+      std::sqrt(out.onNeighbor[0] * out.onNeighbor[0] + out.onNeighbor[1] * out.onNeighbor[1] +
+                out.onNeighbor[2] * out.onNeighbor[2]);
   for (int k = 0; k < 3; ++k) {
     out.onNode[k] += normRelI != 0.0 ? -friction * fI * relI[k] / normRelI : 0.0;
     out.onNeighbor[k] += normRelJ != 0.0 ? -friction * fJ * relJ[k] / normRelJ : 0.0;
@@ -101,7 +100,8 @@ void ShortRangeContact::search(const double* y) {
   MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
   for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
   const int total = displs[size - 1] + counts[size - 1];
-  std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(), topology_.overlapGlobalId.begin() + n);
+  std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
+                                  topology_.overlapGlobalId.begin() + n);
   std::vector<long long> ids(total);
   MPI_Allgatherv(ownedIds.data(), n, MPI_LONG_LONG, ids.data(), counts.data(), displs.data(),
                  MPI_LONG_LONG, comm);
@@ -110,7 +110,8 @@ void ShortRangeContact::search(const double* y) {
     for (auto& v : c) v *= components;
     for (auto& v : d) v *= components;
     std::vector<double> out(static_cast<std::size_t>(total) * components);
-    MPI_Allgatherv(local, n * components, MPI_DOUBLE, out.data(), c.data(), d.data(), MPI_DOUBLE, comm);
+    MPI_Allgatherv(local, n * components, MPI_DOUBLE, out.data(), c.data(), d.data(), MPI_DOUBLE,
+                   comm);
     return out;
   };
   const std::vector<double> allY = gather(y, 3), allVolume = gather(volume_, 1),
@@ -125,7 +126,8 @@ void ShortRangeContact::search(const double* y) {
     MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, comm);
     for (int r = 1; r < size; ++r) offs[r] = offs[r - 1] + lens[r - 1];
     std::string all(static_cast<std::size_t>(offs[size - 1] + lens[size - 1]), '\0');
-    MPI_Allgatherv(joined.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR, comm);
+    MPI_Allgatherv(joined.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR,
+                   comm);
     std::size_t start = 0;
     for (int k = 0; k < total; ++k) {
       const std::size_t end = all.find('\n', start);
@@ -169,7 +171,8 @@ void ShortRangeContact::search(const double* y) {
   for (const auto& l : lists)
     for (long long j : l)
       if (!localOfId.count(ids[j])) ghosts.push_back(static_cast<std::size_t>(j));
-  std::sort(ghosts.begin(), ghosts.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+  std::sort(ghosts.begin(), ghosts.end(),
+            [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   ghostVolume_.resize(ghosts.size());
   ghostHorizon_.resize(ghosts.size());
@@ -188,9 +191,10 @@ void ShortRangeContact::search(const double* y) {
   std::vector<GlobalOrdinal> ghost3(3 * ghostIds.size());
   for (std::size_t g = 0; g < ghostIds.size(); ++g)
     for (int d = 0; d < 3; ++d) ghost3[3 * g + d] = 3 * ghostIds[g] + d;
-  ghostMap3_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                    Teuchos::ArrayView<const GlobalOrdinal>(ghost3.data(), ghost3.size()),
-                                    0, topology_.ownedMap3->getComm()));
+  ghostMap3_ =
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                           Teuchos::ArrayView<const GlobalOrdinal>(ghost3.data(), ghost3.size()), 0,
+                           topology_.ownedMap3->getComm()));
   ghostImport3_ = Teuchos::rcp(new Import(topology_.ownedMap3, ghostMap3_));
 }
 

@@ -33,8 +33,8 @@ class ShortRangeContact {
 
   ContactConfig config_;
   const Topology& topology_;
-  const double* horizon_;   // owned
-  const double* volume_;    // owned
+  const double* horizon_;  // owned
+  const double* volume_;   // owned
   Timers& timers_;
   std::vector<std::string> blockName_;  // owned
   std::vector<int> blockIndex_;         // owned, index into blockNames_

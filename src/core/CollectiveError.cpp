@@ -14,7 +14,8 @@ void throwIfAnyRank(const std::string& localMessage, MPI_Comm comm, bool duringR
   if (first == INT_MAX) return;
   int length = rank == first ? static_cast<int>(localMessage.size()) : 0;
   MPI_Bcast(&length, 1, MPI_INT, first, comm);
-  std::string message = rank == first ? localMessage : std::string(static_cast<std::size_t>(length), ' ');
+  std::string message =
+      rank == first ? localMessage : std::string(static_cast<std::size_t>(length), ' ');
   MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
   if (duringRun) throw RunError(message);
   throw InputError(message);

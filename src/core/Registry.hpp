@@ -42,8 +42,8 @@ class Registry {
   }
   // The entry named by `params.string(kindKey)`, with every key of `params` checked against its
   // documented parameters (plus `extraKeys`): unknown names are errors naming the deck path.
-  static const Entry& lookup(ListReader& params, const std::string& kindKey, const std::string& kind,
-                             const std::vector<std::string>& extraKeys);
+  static const Entry& lookup(ListReader& params, const std::string& kindKey,
+                             const std::string& kind, const std::vector<std::string>& extraKeys);
   static std::vector<std::string> names() {
     std::vector<std::string> out;
     for (const auto& kv : entries()) out.push_back(kv.first);
@@ -52,16 +52,16 @@ class Registry {
 };
 
 template <class Base>
-const typename Registry<Base>::Entry& Registry<Base>::lookup(ListReader& params,
-                                                             const std::string& kindKey,
-                                                             const std::string& kind,
-                                                             const std::vector<std::string>& extraKeys) {
+const typename Registry<Base>::Entry& Registry<Base>::lookup(
+    ListReader& params, const std::string& kindKey, const std::string& kind,
+    const std::vector<std::string>& extraKeys) {
   const std::string name = params.string(kindKey);
   const Entry* entry = find(name);
   if (!entry) {
     std::string known;
     for (const auto& n : names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-    throw InputError(params.pathOf(kindKey), "unknown " + kind + " \"" + name + "\"; Peridot knows " + known);
+    throw InputError(params.pathOf(kindKey),
+                     "unknown " + kind + " \"" + name + "\"; Peridot knows " + known);
   }
   // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
   for (const auto& key : params.keys()) {
@@ -70,7 +70,8 @@ const typename Registry<Base>::Entry& Registry<Base>::lookup(ListReader& params,
     for (const auto& doc : entry->parameters) known = known || doc.name == key;
     if (!known) {
       throw InputError(params.pathOf(key), "unknown parameter of " + kind + " \"" + name +
-                                               "\" (peridot --help-model \"" + name + "\" lists them)");
+                                               "\" (peridot --help-model \"" + name +
+                                               "\" lists them)");
     }
   }
   return *entry;

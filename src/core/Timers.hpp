@@ -17,7 +17,8 @@ class Timers {
     Scope(Timers& timers, const char* name)
         : timers_(timers), name_(name), start_(std::chrono::steady_clock::now()) {}
     ~Scope() {
-      timers_.add(name_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+      timers_.add(name_,
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
     }
 
    private:

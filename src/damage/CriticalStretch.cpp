@@ -28,8 +28,9 @@ void CriticalStretch::bind(const MaterialModel& material, double horizon,
   if (material.family() != "bond-based") {
     throw InputError(path_ + " -> Fracture Energy",
                      "the critical stretch can be derived from the fracture energy for the 3D "
-                     "\"Elastic Bond Based\" material only so far (block " + blockName +
-                         " uses a " + material.family() + " material); give Critical Stretch");
+                     "\"Elastic Bond Based\" material only so far (block " +
+                         blockName + " uses a " + material.family() +
+                         " material); give Critical Stretch");
   }
   if (!(horizon > 0)) {
     throw InputError(path_ + " -> Fracture Energy",
@@ -64,8 +65,9 @@ PERIDOT_REGISTER_DAMAGE("Critical Stretch", CriticalStretch,
                         "Bonds break irreversibly when their stretch exceeds the critical stretch",
                         (std::vector<ParameterDoc>{
                             {"Critical Stretch", "positive number: s_c (or give Fracture Energy)"},
-                            {"Fracture Energy", "positive number: G0, from which s_c is derived "
-                                                "per block (3D PMB: sqrt(5 G0 / (9 K delta)))"},
+                            {"Fracture Energy",
+                             "positive number: G0, from which s_c is derived "
+                             "per block (3D PMB: sqrt(5 G0 / (9 K delta)))"},
                             {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
                             {"Verbose", "bool, default false"}}))
 

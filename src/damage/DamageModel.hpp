@@ -29,9 +29,9 @@ std::unique_ptr<DamageModel> createDamageModel(ListReader& params);
 
 }  // namespace peridot
 
-#define PERIDOT_REGISTER_DAMAGE(DeckName, Class, Summary, Params)                           \
-  namespace {                                                                                \
-  const bool kRegistered##Class = ::peridot::DamageRegistry::add(                            \
+#define PERIDOT_REGISTER_DAMAGE(DeckName, Class, Summary, Params)                             \
+  namespace {                                                                                 \
+  const bool kRegistered##Class = ::peridot::DamageRegistry::add(                             \
       DeckName, [](::peridot::ListReader& p) { return std::make_unique<Class>(p); }, Summary, \
-      Params);                                                                               \
+      Params);                                                                                \
   }

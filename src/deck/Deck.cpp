@@ -4,7 +4,6 @@
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
-
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -21,7 +20,8 @@ namespace peridot {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 std::string trim(const std::string& s) {
@@ -84,7 +84,8 @@ void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path) {
 }
 
 // YAML decks put everything under a top-level `Peridigm:` key.
-Teuchos::RCP<Teuchos::ParameterList> withoutPeridigmWrapper(Teuchos::RCP<Teuchos::ParameterList> deck) {
+Teuchos::RCP<Teuchos::ParameterList> withoutPeridigmWrapper(
+    Teuchos::RCP<Teuchos::ParameterList> deck) {
   if (deck->numParams() == 1 && deck->isSublist("Peridigm")) {
     return Teuchos::rcp(new Teuchos::ParameterList(deck->sublist("Peridigm")));
   }
@@ -153,8 +154,8 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
       last = t;
     }
     if (!where.empty() && where != last) last = where + "; " + last;
-    throw InputError("cannot parse deck file \"" + fileName + "\" as " +
-                     (yaml ? "YAML" : "XML") + ": " + last);
+    throw InputError("cannot parse deck file \"" + fileName + "\" as " + (yaml ? "YAML" : "XML") +
+                     ": " + last);
   }
   return withoutPeridigmWrapper(deck);
 }
@@ -235,8 +236,8 @@ double ListReader::nonNegativeNumber(const std::string& key, double defaultValue
   if (!has(key)) return defaultValue;
   const double v = number(key);
   if (v < 0.0) {
-    throw InputError(pathOf(key),
-                     "expected a non-negative number, got " + describeEntry(*list_.getEntryPtr(key)));
+    throw InputError(pathOf(key), "expected a non-negative number, got " +
+                                      describeEntry(*list_.getEntryPtr(key)));
   }
   return v;
 }
@@ -246,8 +247,9 @@ long long ListReader::integer(const std::string& key) {
   if (e.isType<int>()) return Teuchos::getValue<int>(e);
   if (e.isType<long long>()) return Teuchos::getValue<long long>(e);
   double v = 0.0;
-  const bool parsed = (e.isType<double>() && ((v = Teuchos::getValue<double>(e)), true)) ||
-                      (e.isType<std::string>() && parseNumber(Teuchos::getValue<std::string>(e), v));
+  const bool parsed =
+      (e.isType<double>() && ((v = Teuchos::getValue<double>(e)), true)) ||
+      (e.isType<std::string>() && parseNumber(Teuchos::getValue<std::string>(e), v));
   if (parsed && std::floor(v) == v && std::fabs(v) < 9e15) return static_cast<long long>(v);
   throw InputError(pathOf(key), "expected an integer, got " + describeEntry(e));
 }
@@ -291,8 +293,7 @@ std::string ListReader::choice(const std::string& key, const std::vector<std::st
   for (const auto& c : choices)
     if (v == c) return v;
   std::string list;
-  for (std::size_t i = 0; i < choices.size(); ++i)
-    list += (i ? ", \"" : "\"") + choices[i] + "\"";
+  for (std::size_t i = 0; i < choices.size(); ++i) list += (i ? ", \"" : "\"") + choices[i] + "\"";
   throw InputError(pathOf(key), "unknown value \"" + v + "\"; expected one of " + list);
 }
 
@@ -323,9 +324,9 @@ void ListReader::finish() const {
   for (auto it = list_.begin(); it != list_.end(); ++it) {
     const std::string& key = list_.name(it);
     if (!used_.count(key)) {
-      throw InputError(pathOf(key), std::string("unknown ") +
-                                        (list_.entry(it).isList() ? "list" : "parameter") +
-                                        " (not part of Peridot's deck vocabulary; see doc/deck-reference.md)");
+      throw InputError(pathOf(key),
+                       std::string("unknown ") + (list_.entry(it).isList() ? "list" : "parameter") +
+                           " (not part of Peridot's deck vocabulary; see doc/deck-reference.md)");
     }
   }
 }

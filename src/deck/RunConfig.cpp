@@ -23,7 +23,8 @@ std::vector<std::string> splitWords(const std::string& s) {
 
 std::string normalizedConditionType(std::string s) {
   // Peridigm compares condition types ignoring case and spaces.
-  s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c) || c == '_'; }),
+  s.erase(std::remove_if(s.begin(), s.end(),
+                         [](unsigned char c) { return std::isspace(c) || c == '_'; }),
           s.end());
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
@@ -44,8 +45,9 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
         continue;
       }
       if (!containsNoCase(key, "Node Set")) {
-        throw InputError(bc.pathOf(key), "unknown parameter; node sets are parameters whose name "
-                                         "contains \"Node Set\", conditions are sublists");
+        throw InputError(bc.pathOf(key),
+                         "unknown parameter; node sets are parameters whose name "
+                         "contains \"Node Set\", conditions are sublists");
       }
       config.nodeSets.push_back({key, bc.pathOf(key), bc.string(key)});
       continue;
@@ -66,7 +68,8 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
       cc.kind = ConditionConfig::Kind::BodyForce;
     } else if (t == "prescribedtemperature" || t == "initialtemperature" || t == "thermalflux" ||
                t == "prescribedfluidpressureu" || t == "initialfluidpressureu") {
-      throw InputError(c.pathOf("Type"), "\"" + type + "\" conditions are not supported by Peridot yet");
+      throw InputError(c.pathOf("Type"),
+                       "\"" + type + "\" conditions are not supported by Peridot yet");
     } else {
       throw InputError(c.pathOf("Type"),
                        "unknown condition type \"" + type +
@@ -131,7 +134,8 @@ OutputConfig readOutput(ListReader o, const std::string& name) {
   oc.initialStep = o.integer("Initial Output Step", 0);
   oc.finalStep = o.integer("Final Output Step", -1);
   o.boolean("Parallel Write", true);
-  if (o.has("Bond Family")) throw InputError(o.pathOf("Bond Family"), "not supported by Peridot yet");
+  if (o.has("Bond Family"))
+    throw InputError(o.pathOf("Bond Family"), "not supported by Peridot yet");
   ListReader vars = o.sublist("Output Variables");
   for (const auto& key : vars.keys()) {
     if (vars.boolean(key, false)) oc.variables.push_back(key);
@@ -244,7 +248,8 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
     g.horizon = b.numberOrExpression("Horizon");
     Expression horizon(g.horizon, {"x", "y", "z"}, b.pathOf("Horizon"));
     if (horizon.isConstant() && !(horizon.evaluate(nullptr) > 0)) {
-      throw InputError(b.pathOf("Horizon"), "expected a positive number, got \"" + g.horizon + "\"");
+      throw InputError(b.pathOf("Horizon"),
+                       "expected a positive number, got \"" + g.horizon + "\"");
     }
     b.finish();
     config.blocks.push_back(g);
@@ -252,7 +257,8 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   blocks.finish();
   if (config.blocks.empty()) throw InputError("Blocks", "no block group is defined");
 
-  if (top.has("Boundary Conditions")) readBoundaryConditions(top.sublist("Boundary Conditions"), config);
+  if (top.has("Boundary Conditions"))
+    readBoundaryConditions(top.sublist("Boundary Conditions"), config);
 
   if (top.has("Compute Class Parameters")) {
     ListReader computes = top.sublist("Compute Class Parameters");
@@ -265,7 +271,8 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   for (const auto& key : top.keys()) {
     if (key.find("Solver") != std::string::npos && top.isSublist(key)) {
       if (haveSolver) {
-        throw InputError(key, "Peridot runs one solver per deck; a second solver list is not supported yet");
+        throw InputError(
+            key, "Peridot runs one solver per deck; a second solver list is not supported yet");
       }
       config.solver = readSolver(top.sublist(key));
       haveSolver = true;

@@ -2,7 +2,6 @@
 // The whole deck, validated and typed, before any work is done: every key is read here (or by
 // the model it belongs to), so a misspelt or unsupported key stops the run at once.
 #include <Teuchos_ParameterList.hpp>
-
 #include <map>
 #include <memory>
 #include <string>

@@ -1,7 +1,7 @@
 #include "discretization/Discretization.hpp"
 
-#include <cmath>
 #include <climits>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,8 +41,8 @@ BondFilter readBondFilter(ListReader r, const std::string& name) {
     readVector3(r, "Normal_", f.normal, true);
     f.radius = r.positiveNumber("Radius");
   }
-  const double n = std::sqrt(f.normal[0] * f.normal[0] + f.normal[1] * f.normal[1] +
-                             f.normal[2] * f.normal[2]);
+  const double n =
+      std::sqrt(f.normal[0] * f.normal[0] + f.normal[1] * f.normal[1] + f.normal[2] * f.normal[2]);
   if (!(n > 0)) throw InputError(r.path(), "the normal vector must not be zero");
   for (double& c : f.normal) c /= n;
   if (f.kind == BondFilter::Kind::RectangularPlane) {
@@ -76,8 +76,8 @@ bool BondFilter::cuts(const double* p, const double* q) const {
   const double side[3] = {normal[1] * bottomUnitVector[2] - normal[2] * bottomUnitVector[1],
                           normal[2] * bottomUnitVector[0] - normal[0] * bottomUnitVector[2],
                           normal[0] * bottomUnitVector[1] - normal[1] * bottomUnitVector[0]};
-  const double a = hit[0] * bottomUnitVector[0] + hit[1] * bottomUnitVector[1] +
-                   hit[2] * bottomUnitVector[2];
+  const double a =
+      hit[0] * bottomUnitVector[0] + hit[1] * bottomUnitVector[1] + hit[2] * bottomUnitVector[2];
   const double b = hit[0] * side[0] + hit[1] * side[1] + hit[2] * side[2];
   return a >= 0 && a <= bottomLength && b >= 0 && b <= sideLength;
 }
@@ -176,7 +176,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   }
   // Periodic boundaries (a Peridot extension): the box is the generator's, or given.
   const char* axes[3] = {"X", "Y", "Z"};
-  for (int d = 0; d < 3; ++d) c.periodic.periodic[d] = r.boolean(std::string("Periodic ") + axes[d], false);
+  for (int d = 0; d < 3; ++d)
+    c.periodic.periodic[d] = r.boolean(std::string("Periodic ") + axes[d], false);
   if (c.periodic.any()) {
     const bool generatorBox = c.generator == DiscretizationConfig::Generator::TensorProduct3D;
     for (int d = 0; d < 3; ++d) {
@@ -189,7 +190,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
         c.periodic.lower[d] = r.number(lower);
         c.periodic.upper[d] = r.number(upper);
         if (!(c.periodic.upper[d] > c.periodic.lower[d])) {
-          throw InputError(r.pathOf(upper), std::string("must be larger than Periodic Box Lower ") + axes[d]);
+          throw InputError(r.pathOf(upper),
+                           std::string("must be larger than Periodic Box Lower ") + axes[d]);
         }
       } else {
         r.number(lower, 0.0);
@@ -197,7 +199,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
       }
     }
     if (c.generator == DiscretizationConfig::Generator::Cylinder) {
-      throw InputError(r.pathOf("Periodic X"), "periodic boundaries need a box; the cylinder generator has none");
+      throw InputError(r.pathOf("Periodic X"),
+                       "periodic boundaries need a box; the cylinder generator has none");
     }
   }
   r.boolean("Verbose", false);

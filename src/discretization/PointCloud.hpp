@@ -13,10 +13,10 @@ struct PointSet {
 };
 
 struct PointCloud {
-  std::vector<double> x;            // 3 per point, reference coordinates
-  std::vector<double> volume;       // per point
-  std::vector<int> blockId;         // per point, the mesh block id
-  std::vector<long long> globalId;  // per point, 0-based (Exodus element id - 1)
+  std::vector<double> x;                  // 3 per point, reference coordinates
+  std::vector<double> volume;             // per point
+  std::vector<int> blockId;               // per point, the mesh block id
+  std::vector<long long> globalId;        // per point, 0-based (Exodus element id - 1)
   std::map<int, std::string> blockNames;  // block id -> name ("block_<id>" when unnamed)
   std::vector<PointSet> pointSets;        // mesh node sets as point sets
   int dimension = 3;

@@ -35,7 +35,8 @@ void ModelEvaluator::initialize() {
     for (int i = 0; i < topology_.numOwned; ++i)
       for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b) {
         const int j = topology_.neighbors[b];
-        const double X0 = state_.x[3 * j] - state_.x[3 * i], X1 = state_.x[3 * j + 1] - state_.x[3 * i + 1],
+        const double X0 = state_.x[3 * j] - state_.x[3 * i],
+                     X1 = state_.x[3 * j + 1] - state_.x[3 * i + 1],
                      X2 = state_.x[3 * j + 2] - state_.x[3 * i + 2];
         length[b] = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
       }
@@ -54,7 +55,8 @@ void ModelEvaluator::initialize() {
     const bool conicalOverZeta = influenceFunction_ == "Conical Over Zeta";
     std::unique_ptr<Expression> expr;
     if (!parabolic && !gaussian && !conical && !conicalOverZeta) {
-      expr = std::make_unique<Expression>(influenceFunction_, std::vector<std::string>{"zeta", "horizon"},
+      expr = std::make_unique<Expression>(influenceFunction_,
+                                          std::vector<std::string>{"zeta", "horizon"},
                                           "Discretization -> Influence Function");
     }
     for (int i = 0; i < topology_.numOwned; ++i) {
@@ -79,9 +81,9 @@ void ModelEvaluator::initialize() {
           const double vars[2] = {zeta, delta};
           omega[b] = expr->evaluate(vars);
           if (!std::isfinite(omega[b])) {
-            throw InputError("Discretization -> Influence Function",
-                             "the expression gives a non-finite value at zeta = " +
-                                 std::to_string(zeta));
+            throw InputError(
+                "Discretization -> Influence Function",
+                "the expression gives a non-finite value at zeta = " + std::to_string(zeta));
           }
         }
       }

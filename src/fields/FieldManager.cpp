@@ -27,9 +27,9 @@ double* FieldManager::node(const std::string& name, int components) {
   const auto& owned = components == 1 ? topology_.ownedMap : topology_.ownedMap3;
   const auto& ghost = components == 1 ? topology_.ghostMap : topology_.ghostMap3;
   f.ownedView = f.overlap->offsetViewNonConst(owned, 0)->getVectorNonConst(0);
-  f.ghostView = f.overlap->offsetViewNonConst(ghost, static_cast<size_t>(topology_.numOwned) *
-                                                         components)
-                    ->getVectorNonConst(0);  // regular ghosts; periodic images follow them
+  f.ghostView =
+      f.overlap->offsetViewNonConst(ghost, static_cast<size_t>(topology_.numOwned) * components)
+          ->getVectorNonConst(0);  // regular ghosts; periodic images follow them
   f.data = f.overlap->getDataNonConst().getRawPtr();
   return nodeFields_.emplace(name, std::move(f)).first->second.data;
 }
@@ -55,7 +55,8 @@ void FieldManager::refreshGhosts(const std::string& name) {
   for (std::size_t m = 0; m < topology_.imageSource.size(); ++m) {
     const int source = topology_.imageSource[m], image = first + static_cast<int>(m);
     for (int d = 0; d < c; ++d) {
-      f.data[c * image + d] = f.data[c * source + d] + (position ? topology_.imageShift[3 * m + d] : 0.0);
+      f.data[c * image + d] =
+          f.data[c * source + d] + (position ? topology_.imageShift[3 * m + d] : 0.0);
     }
   }
 }

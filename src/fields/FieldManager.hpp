@@ -4,7 +4,6 @@
 // aligned with the CSR bond lists; global fields are named scalars. Nothing is allocated until
 // a model, a boundary condition or an output asks for it by name.
 #include <Tpetra_Vector.hpp>
-
 #include <map>
 #include <memory>
 #include <set>
@@ -20,10 +19,10 @@ using Vector = Tpetra::Vector<double, LocalOrdinal, GlobalOrdinal>;
 struct NodeField {
   std::string name;
   int components = 1;
-  Teuchos::RCP<Vector> overlap;      // owns the storage
-  Teuchos::RCP<Vector> ownedView;    // view of the owned prefix
-  Teuchos::RCP<Vector> ghostView;    // view of the ghost tail
-  double* data = nullptr;            // components * numOverlap values
+  Teuchos::RCP<Vector> overlap;    // owns the storage
+  Teuchos::RCP<Vector> ownedView;  // view of the owned prefix
+  Teuchos::RCP<Vector> ghostView;  // view of the ghost tail
+  double* data = nullptr;          // components * numOverlap values
 };
 
 class FieldManager {

@@ -111,7 +111,8 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
       // only its own list, in global-id order, whatever the rank count), each term as Peridigm
       // forms it so that two-point cases reproduce its gold results to the last bits.
       const double ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
-      const double tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      const double tj =
+          intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
       const double vj = volume[j];
       f0 += ti * Y0 / dY * vj;
       f1 += ti * Y1 / dY * vj;

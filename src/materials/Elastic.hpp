@@ -36,7 +36,7 @@ class Elastic : public MaterialModel {
   ElasticConstants constants_;
   double* weightedVolume_ = nullptr;
   double* dilatation_ = nullptr;
-  double* bulk_ = nullptr;   // per point, so bonds across blocks see each end's constants
+  double* bulk_ = nullptr;  // per point, so bonds across blocks see each end's constants
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
 };

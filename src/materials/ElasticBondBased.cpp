@@ -101,6 +101,7 @@ PERIDOT_REGISTER_MATERIAL(
         {"Plane Strain", "bool, default false: true is not supported yet"},
         {"Plane Stress", "bool, default false: true is not supported yet"},
         {"Height", "positive number: thickness of 2D models (accepted, unused in 3D)"},
-        {"Finite Difference Probe Length", "positive number: accepted for Peridigm decks, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted for Peridigm decks, unused"}}))
 
 }  // namespace peridot

@@ -14,10 +14,17 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
                      "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
   }
   // Keys every material accepts (elastic constants are checked by the model).
-  static const std::vector<std::string> common = {
-      "Density", "Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio", "Verbose",
-      "Finite Difference Probe Length", "Apply Automatic Differentiation Jacobian",
-      "Apply Shear Correction Factor", "Thermal Expansion Coefficient", "Compute Partial Stress"};
+  static const std::vector<std::string> common = {"Density",
+                                                  "Bulk Modulus",
+                                                  "Shear Modulus",
+                                                  "Young's Modulus",
+                                                  "Poisson's Ratio",
+                                                  "Verbose",
+                                                  "Finite Difference Probe Length",
+                                                  "Apply Automatic Differentiation Jacobian",
+                                                  "Apply Shear Correction Factor",
+                                                  "Thermal Expansion Coefficient",
+                                                  "Compute Partial Stress"};
   const auto& entry = MaterialRegistry::lookup(params, "Material Model", "material model", common);
   auto material = entry.create(params);
   params.finish();
@@ -27,8 +34,9 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
 double readBondBasedBulkModulus(ListReader& p) {
   for (const char* k : {"Shear Modulus", "Poisson's Ratio"}) {
     if (p.has(k)) {
-      throw InputError(p.pathOf(k), "a bond-based material has one elastic constant (Poisson's "
-                                    "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
+      throw InputError(p.pathOf(k),
+                       "a bond-based material has one elastic constant (Poisson's "
+                       "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
     }
   }
   if (p.has("Bulk Modulus") == p.has("Young's Modulus")) {
@@ -57,9 +65,10 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
   int count = 0;
   for (const char* k : keys) count += p.has(k) ? 1 : 0;
   if (count != 2) {
-    throw InputError(p.path(), "exactly two of \"Bulk Modulus\", \"Shear Modulus\", \"Young's "
-                               "Modulus\" and \"Poisson's Ratio\" are required, got " +
-                                   std::to_string(count));
+    throw InputError(p.path(),
+                     "exactly two of \"Bulk Modulus\", \"Shear Modulus\", \"Young's "
+                     "Modulus\" and \"Poisson's Ratio\" are required, got " +
+                         std::to_string(count));
   }
   ElasticConstants c;
   const bool hasK = p.has("Bulk Modulus"), hasG = p.has("Shear Modulus"),
@@ -79,7 +88,8 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
     K = E / (3 * (1 - 2 * nu));
     G = E / (2 * (1 + nu));
   } else if (hasK && hasE) {
-    if (!(E < 9 * K)) throw InputError(p.path(), "Young's Modulus must be less than 9 x Bulk Modulus");
+    if (!(E < 9 * K))
+      throw InputError(p.path(), "Young's Modulus must be less than 9 x Bulk Modulus");
     G = 3 * K * E / (9 * K - E);
     nu = (3 * K - E) / (6 * K);
   } else if (hasK && hasNu) {
@@ -87,7 +97,8 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
     G = E / (2 * (1 + nu));
   } else if (hasG && hasE) {
     nu = E / (2 * G) - 1;
-    if (!(nu > -1.0 && nu < 0.5)) throw InputError(p.path(), "these moduli give a Poisson's ratio outside (-1, 0.5)");
+    if (!(nu > -1.0 && nu < 0.5))
+      throw InputError(p.path(), "these moduli give a Poisson's ratio outside (-1, 0.5)");
     K = E / (3 * (1 - 2 * nu));
   } else {  // G and nu
     E = 2 * G * (1 + nu);
@@ -106,7 +117,8 @@ void acceptCommonMaterialKeys(ListReader& p) {
   // Peridigm's implicit-solver options do not change explicit dynamics.
   p.boolean("Apply Automatic Differentiation Jacobian", true);
   if (p.has("Apply Shear Correction Factor") && p.boolean("Apply Shear Correction Factor", false)) {
-    throw InputError(p.pathOf("Apply Shear Correction Factor"), "true is not supported by Peridot yet");
+    throw InputError(p.pathOf("Apply Shear Correction Factor"),
+                     "true is not supported by Peridot yet");
   }
   if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
     throw InputError(p.pathOf("Thermal Expansion Coefficient"),

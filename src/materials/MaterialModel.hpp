@@ -77,9 +77,9 @@ void acceptCommonMaterialKeys(ListReader& params);
 
 }  // namespace peridot
 
-#define PERIDOT_REGISTER_MATERIAL(DeckName, Class, Summary, Params)                       \
-  namespace {                                                                              \
-  const bool kRegistered##Class = ::peridot::MaterialRegistry::add(                        \
+#define PERIDOT_REGISTER_MATERIAL(DeckName, Class, Summary, Params)                           \
+  namespace {                                                                                 \
+  const bool kRegistered##Class = ::peridot::MaterialRegistry::add(                           \
       DeckName, [](::peridot::ListReader& p) { return std::make_unique<Class>(p); }, Summary, \
-      Params);                                                                             \
+      Params);                                                                                \
   }

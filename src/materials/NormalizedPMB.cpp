@@ -61,7 +61,8 @@ void NormalizedPMB::storedEnergyDensity(const ModelState& s, const std::vector<i
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
       const int j = s.topology->neighbors[b];
       double Y2 = 0;
-      for (int d = 0; d < 3; ++d) Y2 += (s.y[3 * j + d] - s.y[3 * i + d]) * (s.y[3 * j + d] - s.y[3 * i + d]);
+      for (int d = 0; d < 3; ++d)
+        Y2 += (s.y[3 * j + d] - s.y[3 * i + d]) * (s.y[3 * j + d] - s.y[3 * i + d]);
       const double stretch = (std::sqrt(Y2) - s.bondLength[b]) / s.bondLength[b];
       double wb = 0.25 * 0.5 * (micromodulus_[i] + micromodulus_[j]) * stretch * stretch;
       if (s.influence) wb *= s.influence[b];
@@ -79,7 +80,8 @@ void NormalizedPMB::stiffnessSum(const ModelState& s, const std::vector<int>& po
     double total = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
       const int j = s.topology->neighbors[b];
-      total += 0.5 * (micromodulus_[i] + micromodulus_[j]) * s.volume[j] / (s.bondLength[b] * s.bondLength[b]);
+      total += 0.5 * (micromodulus_[i] + micromodulus_[j]) * s.volume[j] /
+               (s.bondLength[b] * s.bondLength[b]);
     }
     sum[i] = total;
   }

@@ -93,7 +93,8 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
     const double r = searchReach(in.rule, h);
     long long c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {
-      c0[d] = std::max<long long>(0, static_cast<long long>(std::floor((xq[d] - r - lo[d]) / cell)));
+      c0[d] =
+          std::max<long long>(0, static_cast<long long>(std::floor((xq[d] - r - lo[d]) / cell)));
       c1[d] = cellCoord(std::min(hi[d], xq[d] + r), d);
     }
     for (long long cz = c0[2]; cz <= c1[2]; ++cz)

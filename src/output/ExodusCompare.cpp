@@ -518,7 +518,8 @@ CompareReport compareExodusResults(const ExodusResults& result, const ExodusResu
       }
     }
     if (wrong > 0) {
-      report.problems.push_back(std::to_string(wrong) + " element(s) in another block, e.g. " + first);
+      report.problems.push_back(std::to_string(wrong) + " element(s) in another block, e.g. " +
+                                first);
     }
   }
 

@@ -20,8 +20,8 @@ std::vector<char*> cstrings(std::vector<std::string>& names) {
 
 void ExodusWriter::check(int status, const std::string& what) const {
   if (status < 0) {
-    throw RunError("writing Exodus file \"" + fileName_ + "\" failed in " + what +
-                   " (code " + std::to_string(status) + ")");
+    throw RunError("writing Exodus file \"" + fileName_ + "\" failed in " + what + " (code " +
+                   std::to_string(status) + ")");
   }
 }
 
@@ -51,12 +51,15 @@ ExodusWriter::ExodusWriter(const std::string& fileName, const ExodusLayout& layo
           "ex_put_block");
     std::vector<int> conn(static_cast<std::size_t>(count));
     for (long long k = 0; k < count; ++k) conn[k] = static_cast<int>(position + k + 1);
-    if (count > 0) check(ex_put_conn(exoid_, EX_ELEM_BLOCK, layout.blockIds[b], conn.data(), nullptr, nullptr), "ex_put_conn");
+    if (count > 0)
+      check(ex_put_conn(exoid_, EX_ELEM_BLOCK, layout.blockIds[b], conn.data(), nullptr, nullptr),
+            "ex_put_conn");
     position += count;
   }
   std::vector<std::string> blockNames = layout.blockNames;
   auto blockPtrs = cstrings(blockNames);
-  if (!blockPtrs.empty()) check(ex_put_names(exoid_, EX_ELEM_BLOCK, blockPtrs.data()), "ex_put_names");
+  if (!blockPtrs.empty())
+    check(ex_put_names(exoid_, EX_ELEM_BLOCK, blockPtrs.data()), "ex_put_names");
   check(ex_put_id_map(exoid_, EX_NODE_MAP, ids.data()), "ex_put_id_map(nodes)");
   check(ex_put_id_map(exoid_, EX_ELEM_MAP, ids.data()), "ex_put_id_map(elements)");
 
@@ -64,11 +67,13 @@ ExodusWriter::ExodusWriter(const std::string& fileName, const ExodusLayout& layo
   for (std::size_t s = 0; s < layout.nodeSets.size(); ++s) {
     const auto& set = layout.nodeSets[s];
     const int setId = static_cast<int>(s + 1);
-    check(ex_put_set_param(exoid_, EX_NODE_SET, setId, static_cast<long long>(set.positions.size()), 0),
+    check(ex_put_set_param(exoid_, EX_NODE_SET, setId, static_cast<long long>(set.positions.size()),
+                           0),
           "ex_put_set_param");
     std::vector<int> nodes;
     for (int p : set.positions) nodes.push_back(p + 1);
-    if (!nodes.empty()) check(ex_put_set(exoid_, EX_NODE_SET, setId, nodes.data(), nullptr), "ex_put_set");
+    if (!nodes.empty())
+      check(ex_put_set(exoid_, EX_NODE_SET, setId, nodes.data(), nullptr), "ex_put_set");
     setNames.push_back(set.name.substr(0, 32));
   }
   if (!setNames.empty()) {
@@ -80,7 +85,8 @@ ExodusWriter::ExodusWriter(const std::string& fileName, const ExodusLayout& layo
     if (names.empty()) return;
     check(ex_put_var_param(exoid_, type, static_cast<int>(names.size())), "ex_put_var_param");
     auto ptrs = cstrings(names);
-    check(ex_put_var_names(exoid_, type, static_cast<int>(names.size()), ptrs.data()), "ex_put_var_names");
+    check(ex_put_var_names(exoid_, type, static_cast<int>(names.size()), ptrs.data()),
+          "ex_put_var_names");
     (void)entity;
   };
   putNames("g", EX_GLOBAL, globalNames);

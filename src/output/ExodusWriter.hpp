@@ -9,9 +9,9 @@
 namespace peridot {
 
 struct ExodusLayout {
-  std::vector<long long> ids;        // per output position: point id + 1
-  std::vector<double> x, y, z;       // reference coordinates per output position
-  std::vector<int> blockIds;         // per block, in output order
+  std::vector<long long> ids;   // per output position: point id + 1
+  std::vector<double> x, y, z;  // reference coordinates per output position
+  std::vector<int> blockIds;    // per block, in output order
   std::vector<std::string> blockNames;
   std::vector<long long> blockCounts;  // points of each block (positions are grouped by block)
   struct Set {
@@ -33,7 +33,8 @@ class ExodusWriter {
 
   // nodal[k] / element[k]: one value per output position; globals: one per name.
   void writeRecord(double time, const std::vector<std::vector<double>>& nodal,
-                   const std::vector<std::vector<double>>& element, const std::vector<double>& globals);
+                   const std::vector<std::vector<double>>& element,
+                   const std::vector<double>& globals);
   const std::string& fileName() const { return fileName_; }
 
  private:

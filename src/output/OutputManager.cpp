@@ -17,7 +17,8 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
     bool onlyGlobal = true;
     for (const auto& v : out.variables) onlyGlobal = onlyGlobal && source.components(v) == 0;
     const std::string path = out.fileName + (onlyGlobal ? ".h" : ".e");
-    auto it = std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
+    auto it =
+        std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
     if (it == files_.end()) {
       files_.push_back(File{path, {}, {}, nullptr});
       it = files_.end() - 1;
@@ -53,7 +54,8 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
   for (std::size_t p = 0; p < order.size(); ++p)
     positionOfId[cloud.globalId[order[p]]] = static_cast<long long>(p);
   positionOfReceived_.resize(allIds.size());
-  for (std::size_t k = 0; k < allIds.size(); ++k) positionOfReceived_[k] = positionOfId.at(allIds[k]);
+  for (std::size_t k = 0; k < allIds.size(); ++k)
+    positionOfReceived_[k] = positionOfId.at(allIds[k]);
 
   ExodusLayout layout;
   for (std::size_t p : order) {
@@ -119,11 +121,13 @@ bool OutputManager::due(long long step) const {
   return false;
 }
 
-void OutputManager::gather(const std::vector<double>& owned, int components, std::vector<double>& out) {
+void OutputManager::gather(const std::vector<double>& owned, int components,
+                           std::vector<double>& out) {
   std::vector<int> counts(gatherCounts_), displs(gatherDispls_);
   for (auto& c : counts) c *= components;
   for (auto& d : displs) d *= components;
-  std::vector<double> received(topology_.rank == 0 ? static_cast<std::size_t>(numPoints_ * components) : 0);
+  std::vector<double> received(
+      topology_.rank == 0 ? static_cast<std::size_t>(numPoints_ * components) : 0);
   MPI_Gatherv(owned.data(), topology_.numOwned * components, MPI_DOUBLE, received.data(),
               counts.data(), displs.data(), MPI_DOUBLE, 0, topology_.comm);
   if (topology_.rank != 0) return;

@@ -51,8 +51,8 @@ void geometry(void* data, int, int, int numObj, ZOLTAN_ID_PTR globalIds, ZOLTAN_
 
 }  // namespace
 
-std::vector<int> partitionAlongCurve(const std::vector<double>& x, const std::vector<double>& weights,
-                                     int numParts) {
+std::vector<int> partitionAlongCurve(const std::vector<double>& x,
+                                     const std::vector<double>& weights, int numParts) {
   const std::size_t n = x.size() / 3;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (std::size_t i = 0; i < n; ++i)
@@ -66,8 +66,9 @@ std::vector<int> partitionAlongCurve(const std::vector<double>& x, const std::ve
     order[i] = i;
     key[i] = mortonKey(&x[3 * i], lo, hi);
   }
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return key[a] != key[b] ? key[a] < key[b] : a < b;
+  });
   double total = 0;
   for (std::size_t i = 0; i < n; ++i) total += weights.empty() ? 1.0 : weights[i];
   std::vector<int> owner(n, 0);
@@ -135,8 +136,8 @@ std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector
     counts[r] = static_cast<int>(e - b);
     displs[r] = static_cast<int>(b);
   }
-  MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_INT, owner.data(),
-                 counts.data(), displs.data(), MPI_INT, comm);
+  MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_INT, owner.data(), counts.data(),
+                 displs.data(), MPI_INT, comm);
   return owner;
 }
 

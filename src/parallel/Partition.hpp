@@ -12,8 +12,8 @@ std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector
                                  MPI_Comm comm);
 
 // Splits the points into `numParts` contiguous pieces of the Morton curve with equal weight.
-std::vector<int> partitionAlongCurve(const std::vector<double>& x, const std::vector<double>& weights,
-                                     int numParts);
+std::vector<int> partitionAlongCurve(const std::vector<double>& x,
+                                     const std::vector<double>& weights, int numParts);
 
 // Morton (Z-order) key of a point in a bounding box: ordering owned points along this
 // space-filling curve keeps a point's neighbours close in memory.

@@ -1,7 +1,6 @@
 #include "parallel/Topology.hpp"
 
 #include <Teuchos_DefaultMpiComm.hpp>
-
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -26,8 +25,8 @@ inline void shiftVector(int code, const PeriodicBox& box, double* shift) {
 }
 
 struct LocalLists {
-  std::vector<std::size_t> owned;           // cloud indices, SFC order
-  std::vector<long long> offsets;           // per owned point
+  std::vector<std::size_t> owned;             // cloud indices, SFC order
+  std::vector<long long> offsets;             // per owned point
   std::vector<unsigned long long> neighbors;  // packed (cloud index, shift code)
 };
 
@@ -176,7 +175,8 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   }
   t.numOverlap = static_cast<int>(t.overlapCloudIndex.size());
   t.overlapGlobalId.resize(t.numOverlap);
-  for (int k = 0; k < t.numOverlap; ++k) t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
+  for (int k = 0; k < t.numOverlap; ++k)
+    t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
 
   t.bondOffsets.assign(t.numOwned + 1, 0);
   std::vector<unsigned long long> sorted(lists.neighbors);
@@ -200,7 +200,9 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   std::vector<GlobalOrdinal> ghostIds(t.overlapGlobalId.begin() + t.numOwned,
                                       t.overlapGlobalId.begin() + t.numOwned + t.numGhosts);
   auto makeMap = [&](const std::vector<GlobalOrdinal>& gids) {
-    return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()), 0, teuchosComm));
+    return Teuchos::rcp(new Map(invalid,
+                                Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()),
+                                0, teuchosComm));
   };
   auto expand3 = [](const std::vector<GlobalOrdinal>& gids) {
     std::vector<GlobalOrdinal> out(3 * gids.size());

@@ -1,11 +1,11 @@
 #pragma once
 // Who owns which point, which points each rank sees as ghosts, and the bonds of every owned
 // point as CSR lists in local overlap indices. Built once from the replicated point cloud.
+#include <mpi.h>
+
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
-#include <mpi.h>
-
 #include <cstdint>
 #include <vector>
 
@@ -31,15 +31,15 @@ struct Topology {
   // Periodic images: overlap indices [numOwned + numGhosts, numOverlap) are copies of a real
   // point (owned or ghost) shifted by a multiple of the periodic box; refreshed after ghosts.
   int numGhosts = 0;
-  std::vector<int> imageSource;      // per image: overlap index of the real point
-  std::vector<double> imageShift;    // per image: 3 components
+  std::vector<int> imageSource;    // per image: overlap index of the real point
+  std::vector<double> imageShift;  // per image: 3 components
   const double* shiftOf(int k) const {
     static const double zero[3] = {0, 0, 0};
     const int image = k - numOwned - numGhosts;
     return image >= 0 ? &imageShift[3 * static_cast<std::size_t>(image)] : zero;
   }
-  std::vector<std::int64_t> bondOffsets;       // numOwned + 1
-  std::vector<int> neighbors;                  // overlap indices, each list sorted by global id
+  std::vector<std::int64_t> bondOffsets;  // numOwned + 1
+  std::vector<int> neighbors;             // overlap indices, each list sorted by global id
 
   // Tpetra maps: scalar maps (one entry per point) and vector maps (3 per point: 3*gid + d).
   Teuchos::RCP<const Map> ownedMap, ghostMap;

@@ -13,7 +13,8 @@ namespace {
 
 std::ostringstream quiet;
 
-std::unique_ptr<Simulation> build(const std::string& extraDiscretization, const std::string& computes) {
+std::unique_ptr<Simulation> build(const std::string& extraDiscretization,
+                                  const std::string& computes) {
   const std::string deck =
       "Peridigm:\n"
       "  Discretization:\n"
@@ -31,9 +32,9 @@ std::unique_ptr<Simulation> build(const std::string& extraDiscretization, const 
       "    V:\n      Type: Initial Velocity\n      Node Set: Corner Node Set\n"
       "      Coordinate: y\n      Value: \"x + 10*z\"\n"
       "  Compute Class Parameters:\n" +
-      computes +
-      "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n";
-  return std::make_unique<Simulation>(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+      computes + "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n";
+  return std::make_unique<Simulation>(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD,
+                                      quiet);
 }
 
 std::string compute(const std::string& label, const std::string& cls, const std::string& calc,
@@ -44,10 +45,11 @@ std::string compute(const std::string& label, const std::string& cls, const std:
 }
 
 TEST(Computes, BlockAndNodeSetReductions) {
-  auto sim = build("", compute("TotalVolume", "Block_Data", "Sum", "block_1", "Volume") +
-                           compute("MaxVy", "Node_Set_Data", "Maximum", "Corner Node Set", "Velocity") +
-                           compute("MinVy", "Node_Set_Data", "Minimum", "Corner Node Set", "Velocity") +
-                           compute("Neighbours", "Block_Data", "Maximum", "block_1", "Number_Of_Neighbors"));
+  auto sim = build(
+      "", compute("TotalVolume", "Block_Data", "Sum", "block_1", "Volume") +
+              compute("MaxVy", "Node_Set_Data", "Maximum", "Corner Node Set", "Velocity") +
+              compute("MinVy", "Node_Set_Data", "Minimum", "Corner Node Set", "Velocity") +
+              compute("Neighbours", "Block_Data", "Maximum", "block_1", "Number_Of_Neighbors"));
   std::vector<double> g;
   sim->globalVariable("TotalVolume", g);
   ASSERT_EQ(g.size(), 1u);
@@ -99,8 +101,9 @@ TEST(Computes, InfluenceFunctionsScaleTheWeightedVolume) {
       {"Conical Over Zeta", expected([&](double z) { return (1 - z / delta) / z; })},
   };
   for (const auto& c : cases) {
-    auto sim = build("    Influence Function: \"" + c.deckValue + "\"\n",
-                     compute("MinM", "Node_Set_Data", "Minimum", "Corner Node Set", "Weighted_Volume"));
+    auto sim =
+        build("    Influence Function: \"" + c.deckValue + "\"\n",
+              compute("MinM", "Node_Set_Data", "Minimum", "Corner Node Set", "Weighted_Volume"));
     std::vector<double> m;
     sim->globalVariable("MinM", m);
     // The corners (points 1 and 64) have the smallest neighbourhoods in the set.

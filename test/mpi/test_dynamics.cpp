@@ -81,8 +81,10 @@ Totals totals(Simulation& sim) {
   double local[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   for (int i = 0; i < t.numOwned; ++i) {
     const double m = 2.0 * vol[i];
-    local[7] += m * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
-    local[6] += 0.5 * m * (a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
+    local[7] += m * std::sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] +
+                              v[3 * i + 2] * v[3 * i + 2]);
+    local[6] +=
+        0.5 * m * (a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
     for (int d = 0; d < 3; ++d) local[d] += m * v[3 * i + d];
     local[3] += m * (y[3 * i + 1] * v[3 * i + 2] - y[3 * i + 2] * v[3 * i + 1]);
     local[4] += m * (y[3 * i + 2] * v[3 * i] - y[3 * i] * v[3 * i + 2]);
@@ -119,7 +121,8 @@ class Conservation : public ::testing::TestWithParam<std::tuple<std::string, boo
 
 TEST_P(Conservation, MomentumAndEnergyOverTenThousandSteps) {
   const auto [material, smooth] = GetParam();
-  const double stable = makeSimulation(cubeDeck(material, 1.0, 2.0, smooth))->stableTimeStepEstimate();
+  const double stable =
+      makeSimulation(cubeDeck(material, 1.0, 2.0, smooth))->stableTimeStepEstimate();
   const double dt = 0.5 * stable;
   const long long steps = 10000;
   auto sim = makeSimulation(cubeDeck(material, dt, (steps + 0.5) * dt, smooth));
@@ -157,20 +160,23 @@ TEST_P(Conservation, MomentumAndEnergyOverTenThousandSteps) {
   }
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0) std::printf("%s (%s): leapfrog energy drift %.3g, kinetic+stored oscillation %.3g, %lld steps\n",
-              material.c_str(), smooth ? "smooth" : "random", drift, maxDeviation / e0, steps);
+  if (rank == 0)
+    std::printf(
+        "%s (%s): leapfrog energy drift %.3g, kinetic+stored oscillation %.3g, %lld steps\n",
+        material.c_str(), smooth ? "smooth" : "random", drift, maxDeviation / e0, steps);
   // The body did deform (energy moved between kinetic and stored), or this proves nothing.
   EXPECT_GT(kineticSeen, 1e-3 * e0);
   RecordProperty("max_energy_deviation", std::to_string(maxDeviation / e0));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Models, Conservation,
-    ::testing::Combine(::testing::Values("Elastic Bond Based", "Elastic"), ::testing::Bool()),
-    [](const auto& info) {
-      return std::string(std::get<0>(info.param) == "Elastic" ? "LPS" : "PMB") +
-             (std::get<1>(info.param) ? "_smooth" : "_random");
-    });
+INSTANTIATE_TEST_SUITE_P(Models, Conservation,
+                         ::testing::Combine(::testing::Values("Elastic Bond Based", "Elastic"),
+                                            ::testing::Bool()),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param) == "Elastic" ? "LPS"
+                                                                                   : "PMB") +
+                                  (std::get<1>(info.param) ? "_smooth" : "_random");
+                         });
 
 TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   // Two points pulled apart fast enough to break their bond; afterwards nothing acts on them.
@@ -179,7 +185,8 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
       "  Discretization:\n    Type: Text File\n    Input Mesh File: two_points.txt\n"
       "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 1.0\n"
       "      Bulk Modulus: 1.0\n      Shear Modulus: 1.0\n"
-      "  Damage Models:\n    D:\n      Damage Model: Critical Stretch\n      Critical Stretch: 0.01\n"
+      "  Damage Models:\n    D:\n      Damage Model: Critical Stretch\n      Critical Stretch: "
+      "0.01\n"
       "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Damage Model: D\n"
       "      Horizon: 1.5\n"
       "  Boundary Conditions:\n    Left Node Set: \"1\"\n    Right Node Set: \"2\"\n"

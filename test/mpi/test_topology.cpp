@@ -29,7 +29,8 @@ PointCloud randomCloud(std::size_t n, unsigned seed) {
 }
 
 // Neighbour global ids of every point by brute force.
-std::map<long long, std::vector<long long>> bruteForce(const PointCloud& c, const std::vector<double>& h,
+std::map<long long, std::vector<long long>> bruteForce(const PointCloud& c,
+                                                       const std::vector<double>& h,
                                                        const std::vector<BondFilter>& filters) {
   std::map<long long, std::vector<long long>> out;
   for (std::size_t i = 0; i < c.size(); ++i) {

@@ -61,7 +61,8 @@ double measuredSpeed(const std::string& model) {
     << model << "\"\n      Density: " << rho << "\n      Bulk Modulus: " << K
     << "\n  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.5\n"
        "  Boundary Conditions:\n    All Node Set: v2_all_points.txt\n"
-       "    U:\n      Type: Initial Displacement\n      Node Set: All Node Set\n      Coordinate: x\n"
+       "    U:\n      Type: Initial Displacement\n      Node Set: All Node Set\n      Coordinate: "
+       "x\n"
        "      Value: \"0.001*exp(-((x - 100)/15)^2)\"\n"
        "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n      Coordinate: x\n"
        "      Value: \""
@@ -85,8 +86,9 @@ TEST(VerificationV2, PulseTravelsAtThePWaveSpeed) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) {
-    std::printf("  c_l = %.4f m/s; normalized PMB %.4f m/s (%+.2f%%); analytic PMB %.4f m/s (%+.2f%%)\n",
-                cl, normalized, 100 * (normalized / cl - 1), analytic, 100 * (analytic / cl - 1));
+    std::printf(
+        "  c_l = %.4f m/s; normalized PMB %.4f m/s (%+.2f%%); analytic PMB %.4f m/s (%+.2f%%)\n",
+        cl, normalized, 100 * (normalized / cl - 1), analytic, 100 * (analytic / cl - 1));
   }
   EXPECT_NEAR(normalized / cl, 1.0, 0.01);
   RecordProperty("analytic_pmb_speed_error", std::to_string(analytic / cl - 1));

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "SerialProblem.hpp"
 #include "core/Error.hpp"
 #include "damage/CriticalStretch.hpp"
 #include "evaluator/ModelEvaluator.hpp"
 #include "materials/Elastic.hpp"
 #include "materials/ElasticBondBased.hpp"
-#include "SerialProblem.hpp"
 
 namespace peridot {
 namespace {
@@ -94,7 +94,8 @@ TEST(Elastic, ThreePointsShear) {
   const double Y[3][3] = {{0, 0, 0}, {1, 0.05, 0}, {0, 1, 0}};
   double m[3] = {0, 0, 0}, theta[3] = {0, 0, 0};
   auto len = [](const double* a, const double* b) {
-    return std::sqrt(std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2) + std::pow(b[2] - a[2], 2));
+    return std::sqrt(std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2) +
+                     std::pow(b[2] - a[2], 2));
   };
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

@@ -64,7 +64,9 @@ TEST(VerificationV1, NormalizedPMBEnergyDensityIsExactAtEveryHorizon) {
   // c = 27 K / (2 pi delta^3) from its eq. 11; its printed eq. 12, 6 K / (pi delta^3), does not
   // follow from eq. 11). With the latter the discrete energy is exact times
   // (neighbours x volume) / (4 pi delta^3 / 3).
-  std::printf("  delta/dx  neighbours  normalized PMB error  analytic (Silling) error  analytic (paper 000) error\n");
+  std::printf(
+      "  delta/dx  neighbours  normalized PMB error  analytic (Silling) error  analytic (paper "
+      "000) error\n");
   double smallestAnalyticError = 1e300;
   for (double m : {2.0, 3.0, 4.0, 5.0, 6.0}) {
     double spread = 0;
