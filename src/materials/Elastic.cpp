@@ -1,5 +1,6 @@
 #include "materials/Elastic.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace peridot {
@@ -27,8 +28,53 @@ inline Bond bondGeometry(const double* x, const double* y, int i, int j) {
 Elastic::Elastic(ListReader& p) {
   density_ = p.positiveNumber("Density");
   constants_ = readTwoElasticConstants(p);
-  acceptCommonMaterialKeys(p);
+  shearCorrection_ = p.boolean("Apply Shear Correction Factor", false);
+  acceptCommonMaterialKeys(p, true);
 }
+
+namespace {
+
+// Peridigm's shear correction: the ratio between the continuum and the discrete deviatoric
+// energy of pure shear u = gamma (y, x, 0) (and the zx, yz modes; the largest discrete energy
+// is used), so that alpha = 15 G / m reproduces the shear energy on the actual neighbourhood.
+double shearCorrectionFactor(const ModelState& s, int i, double m) {
+  const double gamma = 1.0e-6;
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  double largest = 0;
+  for (int mode = 0; mode < 3; ++mode) {
+    const int a = mode, b = (mode + 1) % 3;  // shear in the (a, b) plane
+    auto deformedLength = [&](std::int64_t bond, double& zeta) {
+      const int j = neighbors[bond];
+      double X[3], Y[3];
+      for (int d = 0; d < 3; ++d) X[d] = s.x[3 * j + d] - s.x[3 * i + d];
+      for (int d = 0; d < 3; ++d) Y[d] = X[d];
+      Y[a] += gamma * X[b];
+      Y[b] += gamma * X[a];
+      zeta = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+      return std::sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+    };
+    double theta = 0;
+    for (std::int64_t bond = offsets[i]; bond < offsets[i + 1]; ++bond) {
+      double zeta = 0;
+      const double dY = deformedLength(bond, zeta);
+      const double omega = s.influence ? s.influence[bond] : 1.0;
+      theta += 3.0 * omega * zeta * (dY - zeta) * s.volume[neighbors[bond]] / m;
+    }
+    double norm = 0;
+    for (std::int64_t bond = offsets[i]; bond < offsets[i + 1]; ++bond) {
+      double zeta = 0;
+      const double dY = deformedLength(bond, zeta);
+      const double ed = dY - zeta - theta * zeta / 3;
+      const double omega = s.influence ? s.influence[bond] : 1.0;
+      norm += ed * omega * ed * s.volume[neighbors[bond]];
+    }
+    largest = std::max(largest, norm);
+  }
+  return largest > 0 ? 4.0 * gamma * gamma * m / largest / 15.0 : 1.0;
+}
+
+}  // namespace
 
 void Elastic::declareFields(FieldManager& fields) {
   weightedVolume_ = fields.node(kWeightedVolume, 1);
@@ -57,6 +103,7 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
     bulk_[i] = constants_.bulkModulus;
     // A point without bonds has no weighted volume and exerts no force.
     alpha_[i] = m > 0 ? 15.0 * constants_.shearModulus / m : 0.0;
+    if (shearCorrection_ && m > 0) alpha_[i] *= shearCorrectionFactor(s, i, m);
     beta_[i] = m > 0 ? 3.0 * constants_.bulkModulus / m - alpha_[i] / 3.0 : 0.0;
   }
 }
@@ -157,7 +204,9 @@ PERIDOT_REGISTER_MATERIAL(
         {"Shear Modulus", "positive number: G"},
         {"Young's Modulus", "positive number: E"},
         {"Poisson's Ratio", "number in (-1, 0.5): nu"},
-        {"Apply Shear Correction Factor", "bool, default false: true is not supported yet"},
+        {"Apply Shear Correction Factor",
+         "bool, default false: scale the deviatoric modulus of each point so that pure shear of "
+         "its discrete neighbourhood stores the continuum energy (Peridigm's option)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
         {"Compute Partial Stress", "bool, default false: true is not supported yet"},

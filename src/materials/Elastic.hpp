@@ -34,6 +34,7 @@ class Elastic : public MaterialModel {
  private:
   double density_ = 0;
   ElasticConstants constants_;
+  bool shearCorrection_ = false;
   double* weightedVolume_ = nullptr;
   double* dilatation_ = nullptr;
   double* bulk_ = nullptr;  // per point, so bonds across blocks see each end's constants

@@ -111,14 +111,15 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
   return c;
 }
 
-void acceptCommonMaterialKeys(ListReader& p) {
+void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection) {
   p.positiveNumber("Finite Difference Probe Length", 1.0);
   p.boolean("Verbose", false);
   // Peridigm's implicit-solver options do not change explicit dynamics.
   p.boolean("Apply Automatic Differentiation Jacobian", true);
-  if (p.has("Apply Shear Correction Factor") && p.boolean("Apply Shear Correction Factor", false)) {
+  if (!hasShearCorrection && p.has("Apply Shear Correction Factor") &&
+      p.boolean("Apply Shear Correction Factor", false)) {
     throw InputError(p.pathOf("Apply Shear Correction Factor"),
-                     "true is not supported by Peridot yet");
+                     "not available for this material model");
   }
   if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
     throw InputError(p.pathOf("Thermal Expansion Coefficient"),

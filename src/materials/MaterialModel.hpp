@@ -73,7 +73,7 @@ ElasticConstants readTwoElasticConstants(ListReader& params);
 double readBondBasedBulkModulus(ListReader& params);
 
 // Keys every material accepts and ignores or checks (Peridigm compatibility).
-void acceptCommonMaterialKeys(ListReader& params);
+void acceptCommonMaterialKeys(ListReader& params, bool hasShearCorrection = false);
 
 }  // namespace peridot
 
