@@ -43,7 +43,7 @@ void CriticalStretch::bind(const MaterialModel& material, double horizon,
 }
 
 void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>& points,
-                                    double* bondDamage) {
+                                    float* bondDamage) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* y = s.y;
@@ -56,7 +56,7 @@ void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>&
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
       // max() keeps a broken bond broken without a branch the compiler cannot vectorize.
-      bondDamage[b] = stretch > sc ? 1.0 : bondDamage[b];
+      bondDamage[b] = stretch > sc ? 1.0f : bondDamage[b];
     }
   }
 }

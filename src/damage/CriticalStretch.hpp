@@ -9,7 +9,7 @@ class CriticalStretch : public DamageModel {
  public:
   explicit CriticalStretch(ListReader& params);
   void computeDamage(const ModelState& state, const std::vector<int>& points,
-                     double* bondDamage) override;
+                     float* bondDamage) override;
   double criticalStretch() const { return criticalStretch_; }
   bool bindsToBlock() const override { return fractureEnergy_ > 0; }
   // With `Fracture Energy`, derives the critical stretch from the block's material and horizon.

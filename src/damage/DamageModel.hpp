@@ -15,7 +15,7 @@ class DamageModel {
  public:
   virtual ~DamageModel() = default;
   virtual void computeDamage(const ModelState& state, const std::vector<int>& points,
-                             double* bondDamage) = 0;
+                             float* bondDamage) = 0;
   // Models whose parameters depend on the block (material, horizon) get one instance per block
   // and are bound to it before the run; `log` receives what was derived (rank 0 prints it).
   virtual bool bindsToBlock() const { return false; }

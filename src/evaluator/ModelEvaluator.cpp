@@ -94,7 +94,7 @@ void ModelEvaluator::initialize() {
   bool anyDamage = false;
   for (const auto& b : blocks_) anyDamage = anyDamage || b.damage != nullptr;
   if (anyDamage) {
-    bondDamage_ = fields_.bond("Bond_Damage").data();
+    bondDamage_ = fields_.bondFloat("Bond_Damage").data();
     state_.bondDamage = bondDamage_;
   }
 

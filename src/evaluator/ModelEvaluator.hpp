@@ -38,7 +38,7 @@ class ModelEvaluator {
   std::string influenceFunction_;
   Timers& timers_;
   ModelState state_;
-  double* bondDamage_ = nullptr;
+  float* bondDamage_ = nullptr;
   std::vector<std::string> syncAfterPrecompute_;
 };
 

@@ -69,11 +69,20 @@ std::vector<double>& FieldManager::bond(const std::string& name, double initial)
       .first->second;
 }
 
+std::vector<float>& FieldManager::bondFloat(const std::string& name, float initial) {
+  auto it = floatBondFields_.find(name);
+  if (it != floatBondFields_.end()) return it->second;
+  return floatBondFields_
+      .emplace(name, std::vector<float>(static_cast<std::size_t>(topology_.numBonds()), initial))
+      .first->second;
+}
+
 std::size_t FieldManager::bytesAllocated() const {
   std::size_t bytes = 0;
   for (const auto& kv : nodeFields_)
     bytes += sizeof(double) * kv.second.components * topology_.numOverlap;
   for (const auto& kv : bondFields_) bytes += sizeof(double) * kv.second.size();
+  for (const auto& kv : floatBondFields_) bytes += sizeof(float) * kv.second.size();
   return bytes;
 }
 

@@ -41,6 +41,8 @@ class FieldManager {
   // One value per one-sided bond entry, allocated on first request with `initial`.
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
   bool hasBond(const std::string& name) const { return bondFields_.count(name) > 0; }
+  // Single precision, for bond state that needs no more (bond damage).
+  std::vector<float>& bondFloat(const std::string& name, float initial = 0.0f);
 
   double& global(const std::string& name) { return globals_[name]; }
 
@@ -51,6 +53,7 @@ class FieldManager {
   const Topology& topology_;
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
+  std::map<std::string, std::vector<float>> floatBondFields_;
   std::map<std::string, double> globals_;
   std::set<std::string> positionFields_;
 };

@@ -141,7 +141,7 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
   const double* omegaOf = s.influence;
-  const double* damage = s.bondDamage;
+  const float* damage = s.bondDamage;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];

@@ -40,7 +40,7 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
   const double* c = micromodulus_;
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
-  const double* damage = s.bondDamage;
+  const float* damage = s.bondDamage;
   const double* omega = s.influence;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;

@@ -20,7 +20,8 @@ struct ModelState {
   const double* volume = nullptr;      // per point
   const double* horizon = nullptr;     // per point
   double* forceDensity = nullptr;      // 3 per point; kernels write owned points only
-  const double* bondDamage = nullptr;  // per bond entry; null when no damage model
+  // Per bond entry, 0 intact .. 1 broken; float: 4 bytes a bond, exact for broken/intact.
+  const float* bondDamage = nullptr;  // null when no damage model
   const double* influence = nullptr;   // per bond entry; null means omega = 1
   const double* bondLength = nullptr;  // per bond entry: |xi|, the reference bond length
   double dt = 0.0;

@@ -27,7 +27,7 @@ inline void shiftVector(int code, const PeriodicBox& box, double* shift) {
 struct LocalLists {
   std::vector<std::size_t> owned;             // cloud indices, SFC order
   std::vector<long long> offsets;             // per owned point
-  std::vector<unsigned long long> neighbors;  // packed (cloud index, shift code)
+  std::vector<std::size_t> neighbors;       // packed (cloud index, shift code)
 };
 
 LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horizon,
@@ -109,10 +109,9 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
-  std::vector<std::size_t> found;
-  findNeighbors(in, queries, out.offsets, found);
-  out.neighbors.resize(found.size());
-  for (std::size_t k = 0; k < found.size(); ++k) out.neighbors[k] = candidates[found[k]];
+  // Candidate indices become packed keys in place: one 8-byte word per bond at the peak.
+  findNeighbors(in, queries, out.offsets, out.neighbors);
+  for (auto& k : out.neighbors) k = candidates[k];
   return out;
 }
 
@@ -135,6 +134,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
     for (std::size_t k = 0; k < lists.owned.size(); ++k)
       weight[lists.owned[k]] = 1.0 + static_cast<double>(lists.offsets[k + 1] - lists.offsets[k]);
     MPI_Allreduce(MPI_IN_PLACE, weight.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
+    lists = LocalLists();  // free the first lists before the second search
     owner = partitionPoints(cloud.x, weight, comm);
     lists = searchOwned(cloud, horizon, owner, t.rank, opt);
   }
@@ -145,7 +145,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   // global id. Images come last, sorted by (global id, shift).
   std::vector<std::size_t> ghosts;
   std::vector<unsigned long long> images;
-  for (unsigned long long key : lists.neighbors) {
+  for (std::size_t key : lists.neighbors) {
     const std::size_t j = indexOf(key);
     if (owner[j] != t.rank) ghosts.push_back(j);
     if (codeOf(key) != kNoShift) images.push_back(key);
@@ -179,7 +179,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
     t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
 
   t.bondOffsets.assign(t.numOwned + 1, 0);
-  std::vector<unsigned long long> sorted(lists.neighbors);
+  std::vector<std::size_t>& sorted = lists.neighbors;  // sorted in place
   t.neighbors.resize(lists.neighbors.size());
   for (int i = 0; i < t.numOwned; ++i) {
     const long long b = lists.offsets[i], e = lists.offsets[i + 1];
@@ -191,6 +191,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
       t.neighbors[k] = codeOf(key) == kNoShift ? localOf[indexOf(key)] : localOfImage.at(key);
     }
   }
+  lists = LocalLists();
   long long localBonds = static_cast<long long>(t.neighbors.size());
   MPI_Allreduce(&localBonds, &t.globalNumBonds, 1, MPI_LONG_LONG, MPI_SUM, comm);
 
