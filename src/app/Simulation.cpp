@@ -14,6 +14,7 @@
 #include "core/Error.hpp"
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
+#include "neighbor/NeighborSearch.hpp"
 #include "solvers/StableTimeStep.hpp"
 
 namespace peridot {
@@ -93,7 +94,30 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     }
   }
   nodeSetIds_ = collectNodeSets(cloud_, config_.nodeSets);
+  for (long long id : cloud_.globalId) {
+    if (id + 1 > 2147483647LL) {
+      throw InputError(config_.discretization.meshFilePath,
+                       "point id " + std::to_string(id + 1) +
+                           " does not fit the 32-bit ids of Peridot's Exodus output");
+    }
+  }
 
+  if (config_.discretization.periodic.any()) {
+    // Images are taken one box length away: the box must be longer than the reach, or the
+    // images two boxes away would be missed. (Shorter than twice the reach, a point meets both a
+    // neighbour and its image, as the periodic lattice it stands for does.)
+    const double largest = *std::max_element(cloudHorizon_.begin(), cloudHorizon_.end());
+    const double reach = searchReach(neighborhoodRule(config_.discretization), largest);
+    for (int d = 0; d < 3; ++d) {
+      const auto& box = config_.discretization.periodic;
+      if (box.periodic[d] && box.upper[d] - box.lower[d] <= reach) {
+        throw InputError("Discretization -> Periodic " + std::string(1, "XYZ"[d]),
+                         "the periodic box (" + formatNumber(box.upper[d] - box.lower[d]) +
+                             ") must be longer than the neighbourhood reach (" +
+                             formatNumber(reach) + ")");
+      }
+    }
+  }
   {
     Timers::Scope t(timers_, "Setup: partition + search");
     TopologyOptions options;
@@ -232,13 +256,15 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   const auto& s = config_.solver;
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
-  // A tiny relative allowance keeps round-off in (final - initial) / dt from dropping a step.
   const double ratio = (s.finalTime - s.initialTime) / dt_;
-  numSteps_ = static_cast<long long>(std::floor(ratio * (1.0 + 1e-14)));
+  numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
   if (numSteps_ < 1) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
+}
+
+void Simulation::openOutputs() {
   outputs_ =
       std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
 }
@@ -429,6 +455,7 @@ void Simulation::checkFinite(long long step, double time) {
 
 void Simulation::run() {
   const auto& s = config_.solver;
+  if (!outputs_) openOutputs();
   if (rank_ == 0) {
     log_ << "Points: " << topology_.globalNumPoints
          << ", bonds (one-sided): " << topology_.globalNumBonds << ", ranks: " << topology_.numRanks

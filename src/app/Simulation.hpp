@@ -47,7 +47,7 @@ class Simulation : public VariableSource {
   double stableTimeStepEstimate() const { return stableDt_; }
 
  private:
-  void buildBlocks();
+  void openOutputs();
   void checkVariables();
   void computeAcceleration();
   void evaluateForces(long long step);

@@ -122,12 +122,12 @@ OutputConfig readOutput(ListReader o, const std::string& name) {
   oc.path = o.path();
   o.choice("Output File Type", {"ExodusII"}, "ExodusII");
   o.choice("Output Format", {"BINARY"}, "BINARY");
-  oc.fileName = o.string("Output Filename");
+  oc.fileName = o.string("Output Filename", "dump");  // Peridigm's default
   if (oc.fileName.empty()) throw InputError(o.pathOf("Output Filename"), "the file name is empty");
   // As Peridigm does: dots and spaces in the base name become underscores.
   for (char& ch : oc.fileName)
     if (ch == '.' || ch == ' ') ch = '_';
-  oc.frequency = o.integer("Output Frequency", 1);
+  oc.frequency = o.integer("Output Frequency", -1);  // Peridigm's default: never
   if (oc.frequency == 0 || oc.frequency < -1) {
     throw InputError(o.pathOf("Output Frequency"), "expected a positive integer or -1 (never)");
   }
@@ -155,8 +155,14 @@ ComputeConfig readCompute(ListReader c, const std::string& name) {
   cc.variable = c.string("Variable");
   cc.label = c.string("Output Label");
   if (cc.label.empty()) throw InputError(c.pathOf("Output Label"), "the label is empty");
-  if (!findOutputVariable(cc.variable)) {
+  const VariableInfo* variable = findOutputVariable(cc.variable);
+  if (!variable) {
     throw InputError(c.pathOf("Variable"), "unknown variable \"" + cc.variable + "\"");
+  }
+  if (variable->components == 0) {
+    throw InputError(c.pathOf("Variable"), "\"" + cc.variable +
+                                               "\" is a global variable; Block_Data and "
+                                               "Node_Set_Data reduce point variables");
   }
   c.boolean("Verbose", false);
   c.finish();

@@ -43,8 +43,17 @@ void ModelEvaluator::initialize() {
     state_.bondLength = length.data();
   }
 
-  // Bond influence: stored per bond only when it is not the constant 1.
+  // Bond influence: stored per bond only when it is not the constant 1. The bond-based models'
+  // micromoduli assume omega = 1 (Peridigm's PMB ignores the influence function): refuse rather
+  // than ignore.
   if (influenceFunction_ != "One") {
+    for (const auto& b : blocks_) {
+      if (b.material->family() != "LPS") {
+        throw InputError("Discretization -> Influence Function",
+                         "the " + b.material->family() + " material of block " + b.name +
+                             " assumes omega = 1; use \"One\" or a state-based material");
+      }
+    }
     std::vector<double>& omega = fields_.bond("Influence_Function");
     const std::int64_t* offsets = topology_.bondOffsets.data();
     const int* nb = topology_.neighbors.data();
