@@ -322,7 +322,12 @@ void Simulation::nodeVariable(const std::string& name, std::vector<double>& out)
   } else if (name == "Proc_Num") {
     for (int i = 0; i < n; ++i) out[i] = rank_;
   } else if (name == "Number_Of_Neighbors") {
-    for (int i = 0; i < n; ++i) out[i] = topology_.numNeighbors(i);
+    for (int i = 0; i < n; ++i) {
+      int count = 0;
+      for (auto b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
+        count += topology_.ownSide(b) ? 1 : 0;
+      out[i] = count;
+    }
   } else if (name == "Model_Coordinates") {
     copy(x_);
   } else if (name == "Coordinates") {

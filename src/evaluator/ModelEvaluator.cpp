@@ -27,6 +27,7 @@ void ModelEvaluator::initialize() {
   state_.volume = fields_.node("Volume", 1);
   state_.horizon = fields_.node("Horizon", 1);
   state_.forceDensity = fields_.node("Force_Density", 3);
+  state_.bondSides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
 
   // Reference bond lengths, once: the kernels read them instead of the neighbours' reference
   // coordinates (same formula, so the same bits).
@@ -171,10 +172,14 @@ void ModelEvaluator::evaluate(double dt) {
 void ModelEvaluator::nodeDamage(double* damage) const {
   for (int i = 0; i < topology_.numOwned; ++i) {
     const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];
-    double broken = 0;
-    if (bondDamage_)
-      for (std::int64_t b = b0; b < b1; ++b) broken += bondDamage_[b];
-    damage[i] = b1 > b0 ? broken / static_cast<double>(b1 - b0) : 0.0;
+    // Over the bonds within the point's own horizon (all of them unless horizons differ).
+    double broken = 0, count = 0;
+    for (std::int64_t b = b0; b < b1; ++b) {
+      if (!topology_.ownSide(b)) continue;
+      count += 1;
+      if (bondDamage_) broken += bondDamage_[b];
+    }
+    damage[i] = count > 0 ? broken / count : 0.0;
   }
 }
 

@@ -97,7 +97,7 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
         zetaSquared += X * X;
       }
       const double omega = s.influence ? s.influence[b] : 1.0;
-      m += omega * zetaSquared * s.volume[j];
+      if (s.topology->ownSide(b)) m += omega * zetaSquared * s.volume[j];
     }
     weightedVolume_[i] = m;
     bulk_[i] = constants_.bulkModulus;
@@ -124,7 +124,8 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
       const double zeta = s.bondLength[b];
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      theta += 3.0 * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
+      if (s.topology->ownSide(b))
+        theta += 3.0 * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
     }
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
@@ -157,9 +158,12 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
       // Force state of i on the bond and of j on the reversed bond (pull form: each point sums
       // only its own list, in global-id order, whatever the rank count), each term as Peridigm
       // forms it so that two-point cases reproduce its gold results to the last bits.
-      const double ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
-      const double tj =
-          intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      double ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
+      double tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      if (s.bondSides) {  // an end whose horizon does not hold the bond exerts no force state
+        ti *= s.bondSides[b] & 1;
+        tj *= (s.bondSides[b] >> 1) & 1;
+      }
       const double vj = volume[j];
       f0 += ti * Y0 / dY * vj;
       f1 += ti * Y1 / dY * vj;
@@ -184,6 +188,7 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const Bond g = bondGeometry(s.x, s.y, i, j);
+      if (!s.topology->ownSide(b)) continue;
       const double ed = g.dY - g.zeta - dilatation_[i] * g.zeta / 3.0;
       double w = ed * ed * s.volume[j];
       if (s.influence) w *= s.influence[b];

@@ -50,8 +50,12 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       const double stretch = (dY - zeta[b]) / zeta[b];
-      // Half the pair force from each end, each with its own micromodulus.
-      double t = 0.5 * (ci + c[j]) * stretch;
+      // Half the pair force from each end, each with its own micromodulus (an end whose
+      // horizon does not hold the bond contributes nothing).
+      double t =
+          s.bondSides
+              ? 0.5 * (ci * (s.bondSides[b] & 1) + c[j] * ((s.bondSides[b] >> 1) & 1)) * stretch
+              : 0.5 * (ci + c[j]) * stretch;
       if (omega) t *= omega[b];
       if (damage) t *= 1.0 - damage[b];
       // A bond whose ends coincide carries no direction and, by symmetry, no force.

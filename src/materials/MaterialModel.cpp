@@ -55,7 +55,7 @@ void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& po
     const double c = 18.0 * bulkModulus() / (pi * d * d * d * d);
     double total = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
-      total += s.volume[s.topology->neighbors[b]] * c / s.bondLength[b];
+      if (s.topology->ownSide(b)) total += s.volume[s.topology->neighbors[b]] * c / s.bondLength[b];
     sum[i] = total;
   }
 }

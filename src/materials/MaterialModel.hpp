@@ -15,15 +15,18 @@ namespace peridot {
 struct ModelState {
   const Topology* topology = nullptr;
   FieldManager* fields = nullptr;
-  const double* x = nullptr;           // reference coordinates, 3 per point
-  const double* y = nullptr;           // current coordinates, 3 per point
-  const double* volume = nullptr;      // per point
-  const double* horizon = nullptr;     // per point
-  double* forceDensity = nullptr;      // 3 per point; kernels write owned points only
+  const double* x = nullptr;        // reference coordinates, 3 per point
+  const double* y = nullptr;        // current coordinates, 3 per point
+  const double* volume = nullptr;   // per point
+  const double* horizon = nullptr;  // per point
+  double* forceDensity = nullptr;   // 3 per point; kernels write owned points only
   // Per bond entry, 0 intact .. 1 broken; float: 4 bytes a bond, exact for broken/intact.
-  const float* bondDamage = nullptr;  // null when no damage model
+  const float* bondDamage = nullptr;   // null when no damage model
   const double* influence = nullptr;   // per bond entry; null means omega = 1
   const double* bondLength = nullptr;  // per bond entry: |xi|, the reference bond length
+  // Per bond entry, where horizons differ: bit 0 set if the bond is within the owner's horizon,
+  // bit 1 if within the neighbour's (Topology::bondSides); null when all bonds are two-sided.
+  const unsigned char* bondSides = nullptr;
   double dt = 0.0;
 };
 

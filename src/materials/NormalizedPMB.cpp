@@ -20,7 +20,7 @@ void NormalizedPMB::initialize(const ModelState& s, const std::vector<int>& poin
   for (int i : points) {
     double neighbourhoodVolume = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
-      neighbourhoodVolume += s.volume[s.topology->neighbors[b]];
+      if (s.topology->ownSide(b)) neighbourhoodVolume += s.volume[s.topology->neighbors[b]];
     // A point without neighbours has no bonds to carry a constant.
     micromodulus_[i] = neighbourhoodVolume > 0 ? 18.0 * bulkModulus_ / neighbourhoodVolume : 0.0;
   }

@@ -48,6 +48,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
     }
   }
   for (std::size_t q : queries) reach = std::max(reach, searchReach(in.rule, in.horizon[q]));
+  if (in.unionOfHorizons)
+    for (std::size_t i = 0; i < in.numPoints; ++i)
+      reach = std::max(reach, searchReach(in.rule, in.horizon[i]));
   // Cell edge = largest reach, so a query scans at most its 27 surrounding cells; grow the
   // cells if the grid would have far more cells than points (a huge box with few points).
   double cell = reach > 0 ? reach : 1.0;
@@ -90,7 +93,7 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
     if (box)
       for (int d = 0; d < 3; ++d)
         halfBox[d] = (boxCells(in.rule, d, h) + 0.5) * in.rule.cellSize[d];
-    const double r = searchReach(in.rule, h);
+    const double r = in.unionOfHorizons ? reach : searchReach(in.rule, h);
     long long c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {
       c0[d] =
@@ -112,7 +115,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
                        std::fabs(dz) < halfBox[2];
             } else {
               const double d2 = dx * dx + dy * dy + dz * dz;
-              inside = strict ? d2 < h2 : d2 <= h2;
+              const double hj2 =
+                  in.unionOfHorizons ? std::max(h2, in.horizon[j] * in.horizon[j]) : h2;
+              inside = strict ? d2 < hj2 : d2 <= hj2;
             }
             if (!inside) continue;
             if (in.omitBondsBetweenBlocks && in.blockId[j] != in.blockId[q]) continue;

@@ -15,6 +15,9 @@ struct NeighborSearchInput {
   bool omitBondsBetweenBlocks = false;
   NeighborhoodRule rule;
   const std::vector<BondFilter>* bondFilters = nullptr;
+  // Sphere rules: keep j if it is within the query's horizon or the query within j's (so that
+  // lists are symmetric when horizons differ).
+  bool unionOfHorizons = false;
 };
 
 // For each query (an index into the candidates), appends the indices of its neighbours (self

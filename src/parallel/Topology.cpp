@@ -2,6 +2,7 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -25,9 +26,9 @@ inline void shiftVector(int code, const PeriodicBox& box, double* shift) {
 }
 
 struct LocalLists {
-  std::vector<std::size_t> owned;             // cloud indices, SFC order
-  std::vector<long long> offsets;             // per owned point
-  std::vector<std::size_t> neighbors;       // packed (cloud index, shift code)
+  std::vector<std::size_t> owned;      // cloud indices, SFC order
+  std::vector<long long> offsets;      // per owned point
+  std::vector<std::size_t> neighbors;  // packed (cloud index, shift code)
 };
 
 LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horizon,
@@ -40,11 +41,16 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
     gHi[d] = hi[d] = std::numeric_limits<double>::lowest();
   }
   double reach = 0;
+  const bool unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox &&
+                               std::adjacent_find(horizon.begin(), horizon.end(),
+                                                  std::not_equal_to<double>()) != horizon.end();
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < 3; ++d) {
       gLo[d] = std::min(gLo[d], cloud.x[3 * i + d]);
       gHi[d] = std::max(gHi[d], cloud.x[3 * i + d]);
     }
+    // With differing horizons a neighbour may reach an owned point from its own horizon.
+    if (unionOfHorizons) reach = std::max(reach, searchReach(opt.rule, horizon[i]));
     if (owner[i] != rank) continue;
     out.owned.push_back(i);
     reach = std::max(reach, searchReach(opt.rule, horizon[i]));
@@ -109,6 +115,7 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
+  in.unionOfHorizons = unionOfHorizons;
   // Candidate indices become packed keys in place: one 8-byte word per bond at the peak.
   findNeighbors(in, queries, out.offsets, out.neighbors);
   for (auto& k : out.neighbors) k = candidates[k];
@@ -192,6 +199,36 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
     }
   }
   lists = LocalLists();
+
+  // One-sided bonds (differing horizons, sphere rules): which end's horizon holds each bond,
+  // with the search's own arithmetic so that both ends agree.
+  if (opt.rule.kind != NeighborhoodRule::Kind::CellBox &&
+      std::adjacent_find(horizon.begin(), horizon.end(), std::not_equal_to<double>()) !=
+          horizon.end()) {
+    std::vector<unsigned char> sides(t.neighbors.size(), 3);
+    bool oneSided = false;
+    const bool strict = opt.rule.kind == NeighborhoodRule::Kind::SphereStrict;
+    for (int i = 0; i < t.numOwned; ++i) {
+      const double hi2 = horizon[t.overlapCloudIndex[i]] * horizon[t.overlapCloudIndex[i]];
+      const double* xi = &cloud.x[3 * t.overlapCloudIndex[i]];
+      for (std::int64_t b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
+        const int j = t.neighbors[b];
+        const std::size_t cj = t.overlapCloudIndex[j];
+        const double* shift = t.shiftOf(j);
+        double d2 = 0;
+        for (int d = 0; d < 3; ++d) {
+          const double dx = (cloud.x[3 * cj + d] + shift[d]) - xi[d];
+          d2 += dx * dx;
+        }
+        const double hj2 = horizon[cj] * horizon[cj];
+        const bool own = strict ? d2 < hi2 : d2 <= hi2;
+        const bool other = strict ? d2 < hj2 : d2 <= hj2;
+        sides[b] = static_cast<unsigned char>((own ? 1 : 0) | (other ? 2 : 0));
+        oneSided = oneSided || sides[b] != 3;
+      }
+    }
+    if (oneSided) t.bondSides = std::move(sides);
+  }
   long long localBonds = static_cast<long long>(t.neighbors.size());
   MPI_Allreduce(&localBonds, &t.globalNumBonds, 1, MPI_LONG_LONG, MPI_SUM, comm);
 

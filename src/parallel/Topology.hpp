@@ -40,6 +40,11 @@ struct Topology {
   }
   std::vector<std::int64_t> bondOffsets;  // numOwned + 1
   std::vector<int> neighbors;             // overlap indices, each list sorted by global id
+  // Where horizons differ a bond may lie within one end's horizon only: lists then hold the
+  // union, and bondSides tells per bond whether it is within the owner's horizon (bit 0) and
+  // within the neighbour's (bit 1). Empty when every bond is within both.
+  std::vector<unsigned char> bondSides;
+  bool ownSide(std::int64_t b) const { return bondSides.empty() || (bondSides[b] & 1); }
 
   // Tpetra maps: scalar maps (one entry per point) and vector maps (3 per point: 3*gid + d).
   Teuchos::RCP<const Map> ownedMap, ghostMap;
