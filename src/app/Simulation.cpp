@@ -219,8 +219,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
           throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
     }
   }
-  conditions_ = std::make_unique<BoundaryConditions>(config_.conditions, nodeSets_, x_,
-                                                     topology_.overlapGlobalId.data());
+  conditions_ = std::make_unique<BoundaryConditions>(
+      config_.conditions, nodeSets_, x_, topology_.overlapGlobalId.data(), volume_, comm_);
   if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
 
   if (config_.contact.enabled && config_.discretization.periodic.any()) {

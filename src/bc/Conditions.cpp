@@ -8,7 +8,8 @@ namespace peridot {
 
 BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& conditions,
                                        const std::map<std::string, std::vector<int>>& sets,
-                                       const double* x, const long long* pointIds)
+                                       const double* x, const long long* pointIds,
+                                       const double* volume, MPI_Comm comm)
     : x_(x), pointIds_(pointIds) {
   for (const auto& cc : conditions) {
     auto it = sets.find(cc.nodeSet);
@@ -23,6 +24,13 @@ BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& condi
                                            cc.path + " -> Value");
     c.points = it->second;
     if (cc.kind == ConditionConfig::Kind::BodyForce) hasBodyForce_ = true;
+    if (cc.kind == ConditionConfig::Kind::Traction) {
+      hasBodyForce_ = true;
+      double local = 0, layer = 0;
+      for (int p : c.points) local += volume[p];
+      MPI_Allreduce(&local, &layer, 1, MPI_DOUBLE, MPI_SUM, comm);
+      c.scale = cc.surfaceArea / layer;  // the node set is not empty (checked with the deck)
+    }
     conditions_.push_back(std::move(c));
   }
 }
@@ -84,13 +92,15 @@ void BoundaryConditions::applyPrescribedVelocity(double tNext, double dt, double
 void BoundaryConditions::applyBodyForce(double t, double* b, int numOwned) {
   for (int k = 0; k < 3 * numOwned; ++k) b[k] = 0.0;
   for (auto& c : conditions_) {
-    if (c.config.kind != ConditionConfig::Kind::BodyForce) continue;
+    if (c.config.kind != ConditionConfig::Kind::BodyForce &&
+        c.config.kind != ConditionConfig::Kind::Traction)
+      continue;
     const int d = c.config.coordinate;
     if (c.value->isConstant()) {
-      const double value = c.value->evaluate(nullptr);
+      const double value = c.value->evaluate(nullptr) * c.scale;
       for (int p : c.points) b[3 * p + d] += value;
     } else {
-      for (int p : c.points) b[3 * p + d] += evaluate(c, p, t);
+      for (int p : c.points) b[3 * p + d] += evaluate(c, p, t) * c.scale;
     }
   }
 }

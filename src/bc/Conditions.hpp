@@ -2,6 +2,8 @@
 // Initial conditions, prescribed displacements and body forces on node sets, with values given
 // as expressions in x, y, z, t. Each condition evaluates its expression at most once per point
 // per step (prescribed displacements keep the previous step's values to form the increment).
+#include <mpi.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -18,7 +20,7 @@ class BoundaryConditions {
   // `pointIds`: their global (0-based) ids, for messages.
   BoundaryConditions(const std::vector<ConditionConfig>& conditions,
                      const std::map<std::string, std::vector<int>>& sets, const double* x,
-                     const long long* pointIds);
+                     const long long* pointIds, const double* volume, MPI_Comm comm);
 
   // Initial displacement and velocity, and prescribed displacements at t0. Returns a message
   // naming the condition and point where a value is not finite (empty if all are).
@@ -26,6 +28,9 @@ class BoundaryConditions {
   // Velocity of prescribed components over the step [tPrev, tNext]: (u(tNext) - u(tPrev)) / dt.
   void applyPrescribedVelocity(double tNext, double dt, double* v);
   // Sets the body force density at time t (zero elsewhere) in `externalForceDensity` (owned).
+  // A traction sigma on a surface of area A becomes the body force density sigma A / V over
+  // the points of its node set (total volume V), so that the total force is sigma A exactly
+  // (paper 002's nonlocal Neumann condition, b = sigma dx / (m V) on a lattice).
   void applyBodyForce(double t, double* externalForceDensity, int numOwned);
 
   bool hasBodyForce() const { return hasBodyForce_; }
@@ -38,6 +43,7 @@ class BoundaryConditions {
     std::unique_ptr<Expression> value;
     std::vector<int> points;
     std::vector<double> previous;  // prescribed displacement: u at the previous step
+    double scale = 1.0;            // traction: surface area / layer volume
   };
   double evaluate(Condition& c, int point, double t);
   const double* x_;

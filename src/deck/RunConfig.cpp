@@ -66,6 +66,9 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
       cc.kind = ConditionConfig::Kind::PrescribedDisplacement;
     } else if (t == "bodyforce") {
       cc.kind = ConditionConfig::Kind::BodyForce;
+    } else if (t == "traction") {
+      cc.kind = ConditionConfig::Kind::Traction;
+      cc.surfaceArea = c.positiveNumber("Surface Area");
     } else if (t == "prescribedtemperature" || t == "initialtemperature" || t == "thermalflux" ||
                t == "prescribedfluidpressureu" || t == "initialfluidpressureu") {
       throw InputError(c.pathOf("Type"),
@@ -74,7 +77,7 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
       throw InputError(c.pathOf("Type"),
                        "unknown condition type \"" + type +
                            "\"; expected \"Initial Displacement\", \"Initial Velocity\", "
-                           "\"Prescribed Displacement\" or \"Body Force\"");
+                           "\"Prescribed Displacement\", \"Body Force\" or \"Traction\"");
     }
     cc.nodeSet = c.string("Node Set");
     const std::string coordinate = c.choice("Coordinate", {"x", "y", "z", "X", "Y", "Z"});

@@ -27,11 +27,18 @@ struct NodeSetSpec {
 };
 
 struct ConditionConfig {
-  enum class Kind { InitialDisplacement, InitialVelocity, PrescribedDisplacement, BodyForce };
+  enum class Kind {
+    InitialDisplacement,
+    InitialVelocity,
+    PrescribedDisplacement,
+    BodyForce,
+    Traction  // a traction on a surface, applied as a body force over the node set's layer
+  };
   Kind kind = Kind::InitialVelocity;
   std::string name, path, nodeSet;
-  int coordinate = 0;  // 0, 1, 2
-  std::string value;   // expression in x, y, z, t
+  int coordinate = 0;      // 0, 1, 2
+  std::string value;       // expression in x, y, z, t
+  double surfaceArea = 0;  // Traction: area of the loaded surface
 };
 
 struct SolverConfig {

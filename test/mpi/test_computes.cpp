@@ -113,3 +113,39 @@ TEST(Computes, InfluenceFunctionsScaleTheWeightedVolume) {
 
 }  // namespace
 }  // namespace peridot
+
+namespace peridot {
+namespace {
+
+TEST(Computes, TractionGivesSigmaTimesAreaInTotal) {
+  std::string top;
+  for (int id = 49; id <= 64; ++id) top += std::to_string(id) + (id < 64 ? " " : "");
+  const std::string deck =
+      "Peridigm:\n"
+      "  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
+      "    TensorProduct3DMeshGenerator:\n"
+      "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
+      "      X Length: 4.0\n      Y Length: 4.0\n      Z Length: 2.0\n"
+      "      Number Points X: 4\n      Number Points Y: 4\n      Number Points Z: 4\n"
+      "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 2.0\n"
+      "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n"
+      "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 1.1\n"
+      "  Boundary Conditions:\n    Top Node Set: \"" +
+      top +
+      "\"\n"
+      "    Pull:\n      Type: Traction\n      Node Set: Top Node Set\n      Coordinate: z\n"
+      "      Value: \"2.5 + 0*x\"\n      Surface Area: 16.0\n"
+      "  Compute Class Parameters:\n" +
+      compute("TopForceDensity", "Node_Set_Data", "Sum", "Top Node Set", "External_Force_Density") +
+      "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n";
+  Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+  sim.run();
+  std::vector<double> g;
+  sim.globalVariable("TopForceDensity", g);
+  // 16 points of volume 4*4*2/64 = 0.5: total force = sum(b) * 0.5 = sigma * A = 40.
+  EXPECT_NEAR(g[2] * 0.5, 2.5 * 16.0, 1e-12);
+  EXPECT_EQ(g[0], 0.0);
+}
+
+}  // namespace
+}  // namespace peridot
