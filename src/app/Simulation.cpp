@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -461,10 +462,21 @@ void Simulation::checkFinite(long long step, double time) {
 void Simulation::run() {
   const auto& s = config_.solver;
   if (!outputs_) openOutputs();
+  long long myBonds = topology_.numBonds(), maxBonds = 0;
+  MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
   if (rank_ == 0) {
     log_ << "Points: " << topology_.globalNumPoints
-         << ", bonds (one-sided): " << topology_.globalNumBonds << ", ranks: " << topology_.numRanks
-         << "\n";
+         << ", bonds (one-sided): " << topology_.globalNumBonds
+         << ", ranks: " << topology_.numRanks;
+    if (topology_.numRanks > 1) {
+      // Load balance: the busiest rank's bonds over the average.
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3f",
+                    static_cast<double>(maxBonds) * topology_.numRanks /
+                        static_cast<double>(std::max(1LL, topology_.globalNumBonds)));
+      log_ << ", bond imbalance (max/avg): " << text;
+    }
+    log_ << "\n";
     log_ << "Stable time step estimate: " << stableDt_ << "\n";
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";
