@@ -33,15 +33,19 @@ void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& p
   }
 }
 
-void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>& points) {
+namespace {
+
+// The PMB bond loop, instantiated for the scene's options so that the loop body has no
+// branches on them (and one division per bond).
+template <bool kDamage, bool kSides>
+void pmbForce(const ModelState& s, const std::vector<int>& points, const double* c) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* y = s.y;
-  const double* c = micromodulus_;
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
   const float* damage = s.bondDamage;
-  const double* omega = s.influence;
+  const unsigned char* sides = s.bondSides;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double ci = c[i], yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
@@ -49,17 +53,14 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-      const double stretch = (dY - zeta[b]) / zeta[b];
-      // Half the pair force from each end, each with its own micromodulus (an end whose
-      // horizon does not hold the bond contributes nothing).
-      double t =
-          s.bondSides
-              ? 0.5 * (ci * (s.bondSides[b] & 1) + c[j] * ((s.bondSides[b] >> 1) & 1)) * stretch
-              : 0.5 * (ci + c[j]) * stretch;
-      if (omega) t *= omega[b];
-      if (damage) t *= 1.0 - damage[b];
-      // A bond whose ends coincide carries no direction and, by symmetry, no force.
-      const double scale = dY > 0 ? t * volume[j] / dY : 0.0;
+      // Half the pair force from each end, each with its own micromodulus; an end whose
+      // horizon does not hold the bond contributes nothing.
+      double c2 = kSides ? ci * (sides[b] & 1) + c[j] * ((sides[b] >> 1) & 1) : ci + c[j];
+      if (kDamage) c2 *= 1.0 - damage[b];
+      // t V_j / |Y| with t = c s / 2 and s = (|Y| - |xi|) / |xi|, in one division. A bond whose
+      // ends coincide has no direction and, by symmetry, no force.
+      const double denominator = 2.0 * zeta[b] * dY;
+      const double scale = dY > 0 ? c2 * (dY - zeta[b]) * volume[j] / denominator : 0.0;
       f0 += scale * Y0;
       f1 += scale * Y1;
       f2 += scale * Y2;
@@ -67,6 +68,19 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
     s.forceDensity[3 * i] = f0;
     s.forceDensity[3 * i + 1] = f1;
     s.forceDensity[3 * i + 2] = f2;
+  }
+}
+
+}  // namespace
+
+void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>& points) {
+  // Influence functions are refused for this model (its micromodulus assumes omega = 1).
+  if (s.bondDamage) {
+    s.bondSides ? pmbForce<true, true>(s, points, micromodulus_)
+                : pmbForce<true, false>(s, points, micromodulus_);
+  } else {
+    s.bondSides ? pmbForce<false, true>(s, points, micromodulus_)
+                : pmbForce<false, false>(s, points, micromodulus_);
   }
 }
 

@@ -1,0 +1,133 @@
+// Roofline of the bond loop: how fast can one core stream the arrays a PMB + critical-stretch
+// force loop must read (CSR neighbour indices, reference bond lengths, bond damage, and the
+// neighbours' current coordinates and micromoduli, gathered), and how fast does Peridot's
+// actual force loop (and damage loop) run over the same arrays? Reported as bond visits per
+// second; the force loop's fraction of the streaming rate is the figure of merit.
+// Usage: bench_roofline [--benchmark_min_time=1]   (Google Benchmark options)
+#include <benchmark/benchmark.h>
+#include <mpi.h>
+
+#include <Teuchos_ParameterList.hpp>
+#include <cmath>
+#include <memory>
+
+#include "damage/DamageModel.hpp"
+#include "evaluator/ModelEvaluator.hpp"
+
+using namespace peridot;
+
+namespace {
+
+struct Scene {
+  PointCloud cloud;
+  Topology topology;
+  std::unique_ptr<FieldManager> fields;
+  std::vector<Block> blocks;
+  Timers timers;
+  std::unique_ptr<ModelEvaluator> evaluator;
+
+  explicit Scene(int n) {
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
+          cloud.volume.push_back(1.0);
+          cloud.blockId.push_back(1);
+          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
+        }
+    cloud.blockNames[1] = "block_1";
+    std::vector<double> h(cloud.size(), 3.015);
+    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
+    fields = std::make_unique<FieldManager>(topology);
+    double* x = fields->node("Model_Coordinates", 3);
+    double* y = fields->node("Coordinates", 3);
+    double* v = fields->node("Volume", 1);
+    double* hz = fields->node("Horizon", 1);
+    for (int p = 0; p < topology.numOverlap; ++p) {
+      const std::size_t c = topology.overlapCloudIndex[p];
+      for (int d = 0; d < 3; ++d) x[3 * p + d] = y[3 * p + d] = cloud.x[3 * c + d] * (1 + 1e-4 * d);
+      v[p] = 1.0;
+      hz[p] = 3.015;
+    }
+    Teuchos::ParameterList m;
+    m.set("Material Model", "Elastic Bond Based");
+    m.set("Density", 1.0);
+    m.set("Bulk Modulus", 1.0);
+    ListReader mr(m, "Materials -> M");
+    Teuchos::ParameterList d;
+    d.set("Damage Model", "Critical Stretch");
+    d.set("Critical Stretch", 0.5);
+    ListReader dr(d, "Damage Models -> D");
+    Block b;
+    b.name = "block_1";
+    b.id = 1;
+    b.material = createMaterial(mr);
+    b.damage = createDamageModel(dr);
+    for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
+    blocks.push_back(b);
+    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    evaluator->initialize();
+  }
+};
+
+std::unique_ptr<Scene> theScene;  // destroyed before MPI_Finalize
+
+Scene& scene() {
+  if (!theScene) theScene = std::make_unique<Scene>(48);  // 110592 points, 13 M bonds
+  return *theScene;
+}
+
+// The floor: read every array the force loop reads, once, with the same gather pattern, and
+// do nothing with it but add.
+void StreamBondArrays(benchmark::State& state) {
+  Scene& s = scene();
+  const ModelState& st = s.evaluator->state();
+  const std::int64_t* off = s.topology.bondOffsets.data();
+  const int* nb = s.topology.neighbors.data();
+  const double* c = s.fields->node("PMB_Micromodulus", 1);
+  for (auto _ : state) {
+    double sum = 0;
+    for (int i = 0; i < s.topology.numOwned; ++i) {
+      double local = 0;
+      for (std::int64_t b = off[i]; b < off[i + 1]; ++b) {
+        const int j = nb[b];
+        local += st.bondLength[b] + st.bondDamage[b] + st.y[3 * j] + st.y[3 * j + 1] +
+                 st.y[3 * j + 2] + c[j] + st.volume[j];
+      }
+      sum += local;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(StreamBondArrays)->Unit(benchmark::kMillisecond);
+
+void PMBForceLoop(benchmark::State& state) {
+  Scene& s = scene();
+  for (auto _ : state) s.blocks[0].material->computeForce(s.evaluator->state(), s.blocks[0].points);
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(PMBForceLoop)->Unit(benchmark::kMillisecond);
+
+void CriticalStretchLoop(benchmark::State& state) {
+  Scene& s = scene();
+  float* damage = const_cast<float*>(s.evaluator->state().bondDamage);
+  for (auto _ : state)
+    s.blocks[0].damage->computeDamage(s.evaluator->state(), s.blocks[0].points, damage);
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(CriticalStretchLoop)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  theScene.reset();
+  MPI_Finalize();
+  return 0;
+}
