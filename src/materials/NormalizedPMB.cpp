@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "materials/BondBasedKernels.hpp"
 
 namespace peridot {
 
@@ -27,50 +28,12 @@ void NormalizedPMB::initialize(const ModelState& s, const std::vector<int>& poin
 }
 
 void NormalizedPMB::computeForce(const ModelState& s, const std::vector<int>& points) {
-  const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* y = s.y;
-  const double* c = micromodulus_;
-  const double* zeta = s.bondLength;
-  for (int i : points) {
-    double f0 = 0, f1 = 0, f2 = 0;
-    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-      const double stretch = (dY - zeta[b]) / zeta[b];
-      double t = 0.5 * (c[i] + c[j]) * stretch / zeta[b];
-      if (s.influence) t *= s.influence[b];
-      if (s.bondDamage) t *= 1.0 - s.bondDamage[b];
-      const double scale = dY > 0 ? t * s.volume[j] / dY : 0.0;
-      f0 += scale * Y0;
-      f1 += scale * Y1;
-      f2 += scale * Y2;
-    }
-    s.forceDensity[3 * i] = f0;
-    s.forceDensity[3 * i + 1] = f1;
-    s.forceDensity[3 * i + 2] = f2;
-  }
+  pairForce<true>(s, points, micromodulus_);
 }
 
 void NormalizedPMB::storedEnergyDensity(const ModelState& s, const std::vector<int>& points,
                                         double* energyDensity) const {
-  for (int i : points) {
-    double w = 0;
-    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
-      const int j = s.topology->neighbors[b];
-      double Y2 = 0;
-      for (int d = 0; d < 3; ++d)
-        Y2 += (s.y[3 * j + d] - s.y[3 * i + d]) * (s.y[3 * j + d] - s.y[3 * i + d]);
-      const double stretch = (std::sqrt(Y2) - s.bondLength[b]) / s.bondLength[b];
-      double wb = 0.25 * 0.5 * (micromodulus_[i] + micromodulus_[j]) * stretch * stretch;
-      if (s.influence) wb *= s.influence[b];
-      if (s.bondDamage) wb *= 1.0 - s.bondDamage[b];
-      w += wb * s.volume[j];
-    }
-    energyDensity[i] = w;
-  }
+  pairEnergyDensity<true>(s, points, micromodulus_, energyDensity);
 }
 
 void NormalizedPMB::stiffnessSum(const ModelState& s, const std::vector<int>& points,
