@@ -298,9 +298,10 @@ def parse_peridot(out, cwd):
     # the waiting in the ghost exchange). Peridot has no single loop timer; see README.
     r["loop"] = sum(rows[k]["max"] for k in loop_rows if k in rows)
     r["loop_ave"] = sum(rows[k]["ave"] for k in loop_rows if k in rows)
-    m = re.findall(r"step (\d+)/(\d+) .*?elapsed ([\d.]+) s", out)
+    # "elapsed 12.3 s" or "elapsed 1 min 50 s"; printed only for loops longer than 5 s
+    m = re.findall(r"step (\d+)/(\d+) .*?elapsed (?:(\d+) min )?([\d.]+) s", out)
     if m and m[-1][0] == m[-1][1]:
-        r["elapsed"] = float(m[-1][2])  # printed only for loops longer than 5 s
+        r["elapsed"] = 60.0 * float(m[-1][2] or 0) + float(m[-1][3])
     r["damage"] = None
     h = os.path.join(cwd, "peridot_out.h")
     if shutil.which("ncdump") and os.path.exists(h):

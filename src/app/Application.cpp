@@ -59,6 +59,7 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
   }
   simulation.run();
   simulation.timers().report(std::cout, MPI_COMM_WORLD);
+  simulation.reportMemory(std::cout);
   if (rank == 0) std::cout << "Done." << std::endl;
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -421,6 +422,38 @@ void Simulation::globalVariable(const std::string& name, std::vector<double>& va
     return;
   }
   throw std::logic_error("no global variable " + name);
+}
+
+namespace {
+
+// Peak resident memory of this process in bytes (Linux), 0 where unknown.
+double peakResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return 1024.0 * std::atof(line.c_str() + 6);
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+void Simulation::reportMemory(std::ostream& out) {
+  double local[3] = {static_cast<double>(fields_->bytesAllocated()),
+                     static_cast<double>(topology_.neighbors.size() * sizeof(int) +
+                                         topology_.bondOffsets.size() * sizeof(std::int64_t) +
+                                         topology_.bondSides.size()),
+                     peakResidentBytes()};
+  double total[3];
+  MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, comm_);
+  if (rank_ != 0) return;
+  const double bonds = static_cast<double>(std::max(1LL, topology_.globalNumBonds));
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "Memory (all ranks): fields %.1f MB, bond lists %.1f MB, peak resident %.1f MB "
+                "= %.1f bytes per bond\n",
+                total[0] / 1e6, total[1] / 1e6, total[2] / 1e6, total[2] / bonds);
+  out << text;
 }
 
 void Simulation::evaluateForces(long long step) {

@@ -40,6 +40,8 @@ class Simulation : public VariableSource {
   int globalSize(const std::string& name) const override;
 
   const Topology& topology() const { return topology_; }
+  // Collective: field and bond-list memory and peak resident memory, summed over ranks.
+  void reportMemory(std::ostream& out);
   FieldManager& fields() { return *fields_; }
   Timers& timers() { return timers_; }
   double timeStep() const { return dt_; }
