@@ -518,7 +518,10 @@ def main():
                     help="rerun (once) a run during which other processes used more than this "
                          "fraction of a core")
     ap.add_argument("--no-baseline", action="store_true", help="skip the tiny-run RSS baseline")
-    ap.add_argument("--json", default=None, help="append raw results to this JSON file")
+    ap.add_argument("--json", default=None,
+                    help="results file, saved after every run (default WORKDIR/results.json); "
+                         "runs already in it with the same settings are skipped (resume)")
+    ap.add_argument("--fresh", action="store_true", help="ignore an existing results file")
     ap.add_argument("--write-only", action="store_true",
                     help="only write the decks/inputs under --workdir (e.g. for profiling)")
     ap.add_argument("--retries", type=int, default=2,
@@ -548,22 +551,49 @@ def main():
     os.makedirs(a.workdir, exist_ok=True)
     print("peridot: %s\nlammps:  %s\nworkdir: %s" % (a.peridot, a.lmp, a.workdir), flush=True)
 
-    baselines = {}
+    # Results are saved after every run and a rerun resumes: runs already in the JSON file with
+    # the same settings are not repeated (this box is shared; runs can get killed).
+    if a.json is None:
+        a.json = os.path.join(a.workdir, "results.json")
+    store = {"results": [], "baselines": {}, "settings": []}
+    if os.path.exists(a.json) and not a.fresh and not a.write_only:
+        with open(a.json) as f:
+            store = json.load(f)
+        print("resuming from %s (%d runs saved)" % (a.json, len(store["results"])), flush=True)
+
+    def save():
+        tmp = a.json + ".tmp"
+        with open(tmp, "w") as f:
+            json.dump(store, f, indent=1)
+        os.replace(tmp, a.json)
+
+    def setting_key(r):
+        return (r["code"], r["n"], r["model"], r["np"], r["rep"], r["steps_requested"], r["dt"],
+                r["strain_rate"], r["critical_stretch"], r["skin_dx"], r["lps_influence"])
+
+    done = {setting_key(r) for r in store["results"] if "steps_requested" in r}
+
     if not a.no_baseline and not a.write_only:
         b = argparse.Namespace(**vars(a))
         b.steps = 10
         for code in a.codes:
             for p in a.ranks:
+                if "%s:%d" % (code, p) in store["baselines"]:
+                    continue
                 sc = Scene(BASELINE_N, "pmb", b)
                 d = os.path.join(a.workdir, "baseline")
                 os.makedirs(d, exist_ok=True)
                 sc.write_peridot(d)
                 sc.write_lammps(d)
                 r = one_run(code, sc, p, d, b, "%s_np%d" % (code, p))
-                baselines[(code, p)] = r["rss_total_kb"] / 1024.0
-                print("baseline %s np%d: %.0f MB" % (code, p, baselines[(code, p)]), flush=True)
+                store["baselines"]["%s:%d" % (code, p)] = r["rss_total_kb"] / 1024.0
+                save()
+                print("baseline %s np%d: %.0f MB" % (code, p, r["rss_total_kb"] / 1024.0),
+                      flush=True)
+    if not a.write_only:
+        store["settings"].append({k: v for k, v in vars(a).items()})
+        save()
 
-    results = []
     for n in a.sizes:
         for model in a.models:
             sc = Scene(n, model, a)
@@ -580,17 +610,27 @@ def main():
             for rep in range(a.repeats):
                 for p in a.ranks:
                     for code in a.codes:  # alternate the codes within each repeat
+                        meta = dict(code=code, n=n, model=model, np=p, rep=rep,
+                                    steps_requested=a.steps, dt=a.dt, strain_rate=a.strain_rate,
+                                    critical_stretch=a.critical_stretch, skin_dx=a.skin,
+                                    lps_influence=a.lps_influence)
+                        if setting_key(meta) in done:
+                            continue
                         tag = "%s_np%d_r%d" % (code, p, rep)
-                        r = one_run(code, sc, p, d, a, tag)
-                        for _ in range(a.retries):
+                        r = one_run(code, sc, p, d, a, tag + "_a0")
+                        r["tag"] = tag + "_a0"
+                        for attempt in range(1, a.retries + 1):
                             if r["foreign_frac"] <= a.max_foreign:
                                 break
                             print("  (%s: other processes used %.2f cores during the run; "
-                                  "running it again)" % (tag, r["foreign_frac"]), flush=True)
-                            r2 = one_run(code, sc, p, d, a, tag)
+                                  "running it again)" % (r["tag"], r["foreign_frac"]), flush=True)
+                            r2 = one_run(code, sc, p, d, a, "%s_a%d" % (tag, attempt))
+                            r2["tag"] = "%s_a%d" % (tag, attempt)
                             r = r2 if r2["foreign_frac"] < r["foreign_frac"] else r
-                        r.update(code=code, n=n, model=model, np=p, rep=rep)
-                        results.append(r)
+                        r.update(meta)
+                        r["date"] = time.strftime("%Y-%m-%d %H:%M:%S")
+                        store["results"].append(r)
+                        save()
                         print("%-8s N=%-4d %s np=%d rep=%d  loop %.3f s  bonds %d  RSS %.0f MB  "
                               "damage %s  foreign %.2f cores" % (
                                   code, n, model, p, rep, r["loop"], r["bonds"],
@@ -598,18 +638,10 @@ def main():
                                   r["foreign_frac"]), flush=True)
     if a.write_only:
         return
-    if a.json:
-        old = {"results": [], "baselines": {}}
-        if os.path.exists(a.json):
-            with open(a.json) as f:
-                old = json.load(f)
-        old["results"] += results
-        old["baselines"].update({"%s:%d" % k: v for k, v in baselines.items()})
-        old.setdefault("settings", []).append({k: v for k, v in vars(a).items()})
-        with open(a.json, "w") as f:
-            json.dump(old, f, indent=1)
+    wanted = [r for r in store["results"] if r["n"] in a.sizes and r["model"] in a.models]
+    baselines = {(k.split(":")[0], int(k.split(":")[1])): v for k, v in store["baselines"].items()}
     print()
-    print(report(results, baselines or None))
+    print(report(wanted, baselines or None))
 
 
 if __name__ == "__main__":
