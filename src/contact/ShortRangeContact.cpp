@@ -83,12 +83,6 @@ ShortRangeContact::ShortRangeContact(const ContactConfig& config, const Topology
   offsets_.assign(topology_.numOwned + 1, 0);
 }
 
-long long ShortRangeContact::numContactPairs() const {
-  long long local = static_cast<long long>(neighbors_.size()), total = 0;
-  MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, topology_.comm);
-  return total;
-}
-
 void ShortRangeContact::search(const double* y) {
   Timers::Scope timer(timers_, "Contact search");
   const int n = topology_.numOwned;

@@ -26,7 +26,6 @@ class ShortRangeContact {
   void search(const double* y);
   // Contact force density of the owned points (collective: refreshes contact ghosts).
   void computeForce(const double* y, const double* v, double* contactForce);
-  long long numContactPairs() const;
 
  private:
   void refresh(const double* owned, std::vector<double>& ghost);

@@ -25,7 +25,6 @@ class ModelEvaluator {
   void evaluate(double dt);
 
   const ModelState& state() const { return state_; }
-  bool hasDamage() const { return bondDamage_ != nullptr; }
   // Fraction of broken bonds per owned point (0 where no damage model or no bonds).
   void nodeDamage(double* damage) const;
   void storedEnergyDensity(double* energyDensity) const;

@@ -86,10 +86,4 @@ std::size_t FieldManager::bytesAllocated() const {
   return bytes;
 }
 
-std::vector<std::string> FieldManager::nodeFieldNames() const {
-  std::vector<std::string> names;
-  for (const auto& kv : nodeFields_) names.push_back(kv.first);
-  return names;
-}
-
 }  // namespace peridot

@@ -1,8 +1,8 @@
 #pragma once
 // Registry of named fields. Node fields are Tpetra vectors on the overlap map (owned points
 // first, then ghosts) with 1 or 3 components interleaved per point; bond fields are flat arrays
-// aligned with the CSR bond lists; global fields are named scalars. Nothing is allocated until
-// a model, a boundary condition or an output asks for it by name.
+// aligned with the CSR bond lists (global values are computed by the output). Nothing is allocated
+// until a model, a boundary condition or an output asks for it by name.
 #include <Tpetra_Vector.hpp>
 #include <map>
 #include <memory>
@@ -31,7 +31,6 @@ class FieldManager {
 
   // Returns the field's storage, allocating it (zeroed) on first request.
   double* node(const std::string& name, int components);
-  bool hasNode(const std::string& name) const { return nodeFields_.count(name) > 0; }
   const NodeField& nodeField(const std::string& name) const;
   // Copies owned values to the ghost copies on other ranks, and to periodic images.
   void refreshGhosts(const std::string& name);
@@ -40,21 +39,16 @@ class FieldManager {
 
   // One value per one-sided bond entry, allocated on first request with `initial`.
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
-  bool hasBond(const std::string& name) const { return bondFields_.count(name) > 0; }
   // Single precision, for bond state that needs no more (bond damage).
   std::vector<float>& bondFloat(const std::string& name, float initial = 0.0f);
 
-  double& global(const std::string& name) { return globals_[name]; }
-
   std::size_t bytesAllocated() const;
-  std::vector<std::string> nodeFieldNames() const;
 
  private:
   const Topology& topology_;
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, std::vector<float>> floatBondFields_;
-  std::map<std::string, double> globals_;
   std::set<std::string> positionFields_;
 };
 
