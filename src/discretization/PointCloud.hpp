@@ -19,7 +19,9 @@ struct PointCloud {
   std::vector<long long> globalId;        // per point, 0-based (Exodus element id - 1)
   std::map<int, std::string> blockNames;  // block id -> name ("block_<id>" when unnamed)
   std::vector<PointSet> pointSets;        // mesh node sets as point sets
+  // 2 for planar discretizations (points in z = 0, volume = area x thickness), else 3.
   int dimension = 3;
+  double thickness = 1.0;  // out-of-plane thickness of a 2D discretization
 
   std::size_t size() const { return volume.size(); }
 };

@@ -17,6 +17,11 @@ class ModelEvaluator {
   ModelEvaluator(const Topology& topology, FieldManager& fields, std::vector<Block>& blocks,
                  const std::string& influenceFunction, Timers& timers);
 
+  // A planar run: points in z = 0, volumes include `thickness`. Call before initialize().
+  void setPlanar(double thickness) {
+    state_.dimension = 2;
+    state_.thickness = thickness;
+  }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();

@@ -28,7 +28,13 @@ struct ModelState {
   // bit 1 if within the neighbour's (Topology::bondSides); null when all bonds are two-sided.
   const unsigned char* bondSides = nullptr;
   double dt = 0.0;
+  // 2 for a planar run (points in z = 0; volumes already include the thickness), else 3.
+  int dimension = 3;
+  double thickness = 1.0;  // out-of-plane thickness of a 2D run
 };
+
+// How a material reads its elastic constants: in 3D, or in plane stress / plane strain.
+enum class PlaneMode { ThreeD, PlaneStress, PlaneStrain };
 
 class MaterialModel {
  public:
@@ -58,6 +64,9 @@ class MaterialModel {
   virtual std::vector<std::string> outputFields() const { return {}; }
   // A tag shared by models whose points may be bonded to each other.
   virtual std::string family() const = 0;
+  // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it
+  // matches the discretization's dimension.
+  virtual PlaneMode planeMode() const { return PlaneMode::ThreeD; }
 };
 
 using MaterialRegistry = Registry<MaterialModel>;
