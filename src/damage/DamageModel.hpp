@@ -21,6 +21,8 @@ class DamageModel {
   virtual bool bindsToBlock() const { return false; }
   virtual void bind(const MaterialModel& /*material*/, double /*horizon*/,
                     const std::string& /*blockName*/, std::ostream& /*log*/) {}
+  // The force law the block's material must apply with this damage (see BondLaw.hpp).
+  virtual BondLaw bondLaw() const { return BondLaw(); }
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -47,14 +47,23 @@ void ModelEvaluator::initialize() {
   // Bond influence: stored per bond only when it is not the constant 1. The bond-based models'
   // micromoduli assume omega = 1 (Peridigm's PMB ignores the influence function): refuse rather
   // than ignore.
-  if (influenceFunction_ != "One") {
-    for (const auto& b : blocks_) {
-      if (b.material->family() != "LPS") {
-        throw InputError("Discretization -> Influence Function",
-                         "the " + b.material->family() + " material of block " + b.name +
-                             " assumes omega = 1; use \"One\" or a state-based material");
-      }
+  state_.influenceFunction = influenceFunction_;
+  for (const auto& b : blocks_) {
+    if (!b.material->acceptsInfluenceFunction(influenceFunction_)) {
+      throw InputError("Discretization -> Influence Function",
+                       "the " + b.material->family() + " material of block " + b.name +
+                           " does not support the influence function \"" + influenceFunction_ +
+                           "\"; use \"One\" or a state-based material");
     }
+    if (b.damage && b.damage->bondLaw().kind != BondLaw::Kind::Linear &&
+        !b.material->acceptsSmoothBondLaw()) {
+      throw InputError("Blocks -> " + b.name, "the damage model \"" + b.damageName +
+                                                  "\" needs a material that applies its "
+                                                  "smooth force law; the " +
+                                                  b.material->family() + " material does not");
+    }
+  }
+  if (influenceFunction_ != "One") {
     std::vector<double>& omega = fields_.bond("Influence_Function");
     const std::int64_t* offsets = topology_.bondOffsets.data();
     const int* nb = topology_.neighbors.data();
@@ -160,13 +169,19 @@ void ModelEvaluator::evaluate(double dt) {
   if (!syncAfterPrecompute_.empty()) {
     {
       Timers::Scope t(timers_, "Force");
-      for (auto& b : blocks_) b.material->precompute(state_, b.points);
+      for (auto& b : blocks_) {
+        state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
+        b.material->precompute(state_, b.points);
+      }
     }
     Timers::Scope t(timers_, "Ghost exchange");
     for (const auto& f : syncAfterPrecompute_) fields_.refreshGhosts(f);
   }
   Timers::Scope t(timers_, "Force");
-  for (auto& b : blocks_) b.material->computeForce(state_, b.points);
+  for (auto& b : blocks_) {
+    state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
+    b.material->computeForce(state_, b.points);
+  }
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {
@@ -184,7 +199,11 @@ void ModelEvaluator::nodeDamage(double* damage) const {
 }
 
 void ModelEvaluator::storedEnergyDensity(double* energyDensity) const {
-  for (const auto& b : blocks_) b.material->storedEnergyDensity(state_, b.points, energyDensity);
+  ModelState state = state_;
+  for (const auto& b : blocks_) {
+    state.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
+    b.material->storedEnergyDensity(state, b.points, energyDensity);
+  }
 }
 
 }  // namespace peridot

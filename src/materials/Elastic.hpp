@@ -23,6 +23,7 @@ class Elastic : public MaterialModel {
                            double* energyDensity) const override;
   std::vector<std::string> outputFields() const override { return {kWeightedVolume, kDilatation}; }
   std::string family() const override { return "LPS"; }
+  bool acceptsInfluenceFunction(const std::string&) const override { return true; }
 
   static constexpr const char* kWeightedVolume = "Weighted_Volume";
   static constexpr const char* kDilatation = "Dilatation";

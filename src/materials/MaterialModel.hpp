@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Registry.hpp"
+#include "damage/BondLaw.hpp"
 #include "fields/FieldManager.hpp"
 #include "parallel/Topology.hpp"
 
@@ -31,6 +32,10 @@ struct ModelState {
   // 2 for a planar run (points in z = 0; volumes already include the thickness), else 3.
   int dimension = 3;
   double thickness = 1.0;  // out-of-plane thickness of a 2D run
+  // Set per block by the evaluator from the block's damage model (Linear without one).
+  BondLaw bondLaw;
+  // The deck's influence function ("One", "Conical", ...); `influence` holds its values.
+  std::string influenceFunction = "One";
 };
 
 // How a material reads its elastic constants: in 3D, or in plane stress / plane strain.
@@ -67,6 +72,11 @@ class MaterialModel {
   // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it
   // matches the discretization's dimension.
   virtual PlaneMode planeMode() const { return PlaneMode::ThreeD; }
+  // Whether the model honours the influence function of that name (bond-based micromoduli
+  // are derived for omega = 1 only unless the model says otherwise).
+  virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }
+  // Whether the model applies a Smooth BondLaw (DTT); damage models that need one check this.
+  virtual bool acceptsSmoothBondLaw() const { return false; }
 };
 
 using MaterialRegistry = Registry<MaterialModel>;

@@ -238,7 +238,7 @@ peridot_baddeck(xml_duplicate_parameter DECK xml_duplicate_parameter.xml
 
 # ---- checks added with the influence-function, compute and periodic-box validation ----
 peridot_baddeck(influence_with_bond_based DECK influence_with_bond_based.yaml
-  EXPECT [[Discretization -> Influence Function: the bond-based material of block block_1 assumes omega = 1]])
+  EXPECT [[Discretization -> Influence Function: the bond-based material of block block_1 does not support the influence function]])
 peridot_baddeck(compute_of_global_variable DECK compute_of_global_variable.yaml
   EXPECT [[Compute Class Parameters -> Energy Sum -> Variable: "Global_Kinetic_Energy" is a global variable]])
 peridot_baddeck(periodic_box_too_short DECK periodic_box_too_short.yaml

@@ -1,0 +1,44 @@
+#pragma once
+// How a bond's force scalar depends on its stretch, as the block's damage model dictates.
+// Plain data read inside the bond loops (no virtual call per bond):
+//   Linear: the force scalar is the stretch s (every model without a smooth damage law);
+//   Smooth: Du, Tao and Tian's (paper 002, eq. 5) continuous piecewise-linear F(s), with
+//           thresholds S1- < S0- < 0 <= S0+ < S1+; the stored energy uses p(s), p' = F, p(0) = 0.
+// The damage factor mu(S*) itself travels in the bond damage (1 - mu).
+namespace peridot {
+
+struct BondLaw {
+  enum class Kind { Linear, Smooth };
+  Kind kind = Kind::Linear;
+  double s1Minus = -0.99, s0Minus = -0.98, s0Plus = 0.0, s1Plus = 0.0;
+
+  // F(s).
+  double forceScalar(double s) const {
+    if (kind == Kind::Linear) return s;
+    if (s >= s0Minus && s <= s0Plus) return s;
+    if (s > s0Plus && s < s1Plus) return s0Plus * (s1Plus - s) / (s1Plus - s0Plus);
+    if (s > s1Minus && s < s0Minus) return s0Minus * (s - s1Minus) / (s0Minus - s1Minus);
+    return 0.0;
+  }
+  // p(s) = integral of F from 0 to s.
+  double potential(double s) const {
+    if (kind == Kind::Linear) return 0.5 * s * s;
+    if (s >= s0Minus && s <= s0Plus) return 0.5 * s * s;
+    if (s > s0Plus) {
+      const double t = s < s1Plus ? s : s1Plus;
+      // 1/2 S0+^2 + integral_{S0+}^{t} S0+ (S1+ - x) / (S1+ - S0+) dx
+      const double w = s1Plus - s0Plus;
+      return 0.5 * s0Plus * s0Plus +
+             s0Plus * ((s1Plus - s0Plus) * (s1Plus - s0Plus) - (s1Plus - t) * (s1Plus - t)) /
+                 (2.0 * w);
+    }
+    const double t = s > s1Minus ? s : s1Minus;
+    // 1/2 S0-^2 + integral_{S0-}^{t} S0- (x - S1-) / (S0- - S1-) dx  (t < S0-, so it adds)
+    const double w = s0Minus - s1Minus;
+    return 0.5 * s0Minus * s0Minus +
+           s0Minus * ((t - s1Minus) * (t - s1Minus) - (s0Minus - s1Minus) * (s0Minus - s1Minus)) /
+               (2.0 * w);
+  }
+};
+
+}  // namespace peridot
