@@ -186,6 +186,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
         b.damage = createDamageModel(params);
         Expression horizonOfBlock(group.horizon, {"x", "y", "z"}, group.path + " -> Horizon");
         std::ostringstream derived;
+        // The derivation of s_c from G0 depends on the influence function.
+        b.material->setInfluenceFunction(config_.discretization.influenceFunction);
         b.damage->bind(*b.material,
                        horizonOfBlock.isConstant() ? horizonOfBlock.evaluate(nullptr) : -1.0,
                        b.name, derived);
