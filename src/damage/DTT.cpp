@@ -5,6 +5,7 @@
 
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -49,13 +50,19 @@ DTT::DTT(ListReader& p) : path_(p.path()) {
   p.boolean("Verbose", false);
 }
 
-void DTT::bind(const MaterialModel& /*material*/, double /*horizon*/, const std::string& blockName,
-               std::ostream& /*log*/) {
+void DTT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
+               std::ostream& log) {
   if (fractureEnergy_ <= 0) return;
-  throw InputError(path_ + " -> Fracture Energy",
-                   "deriving the critical stretch from the fracture energy is not available yet "
-                   "(block " +
-                       blockName + "); give Critical Stretch");
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
 }
 
 BondLaw DTT::bondLaw() const {
@@ -96,7 +103,8 @@ PERIDOT_REGISTER_DAMAGE(
     (std::vector<ParameterDoc>{
         {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
         {"Fracture Energy",
-         "positive number: G0, from which S_c is derived per block (not available yet)"},
+         "positive number: G0, from which S_c is derived per block from its material, dimension "
+         "and influence function (doc/theory/fracture-energy.md)"},
         {"S0 Plus Over Critical Stretch",
          "number in [0, 1], default 0.95: S0+ = this x S_c, where the force starts to soften and "
          "the bond to break"},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -25,13 +26,19 @@ LSJT::LSJT(ListReader& p) : path_(p.path()) {
   p.boolean("Verbose", false);
 }
 
-void LSJT::bind(const MaterialModel& /*material*/, double /*horizon*/, const std::string& blockName,
-                std::ostream& /*log*/) {
+void LSJT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
+                std::ostream& log) {
   if (fractureEnergy_ <= 0) return;
-  throw InputError(path_ + " -> Fracture Energy",
-                   "deriving the critical stretch from the fracture energy is not available yet "
-                   "(block " +
-                       blockName + "); give Critical Stretch");
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
 }
 
 void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
@@ -76,7 +83,8 @@ PERIDOT_REGISTER_DAMAGE(
     (std::vector<ParameterDoc>{
         {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
         {"Fracture Energy",
-         "positive number: G0, from which S_c is derived per block (not available yet)"},
+         "positive number: G0, from which S_c is derived per block from its material, dimension "
+         "and influence function (doc/theory/fracture-energy.md)"},
         {"Verbose", "bool, default false"}}))
 
 }  // namespace peridot

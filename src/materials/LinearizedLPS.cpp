@@ -6,12 +6,8 @@ namespace peridot {
 
 LinearizedLPS::LinearizedLPS(ListReader& p) {
   density_ = p.positiveNumber("Density");
+  mode_ = readPlaneMode(p);
   constants_ = readTwoElasticConstants(p);
-  const bool stress = p.boolean("Plane Stress", false), strain = p.boolean("Plane Strain", false);
-  if (stress && strain) {
-    throw InputError(p.path(), "\"Plane Stress\" and \"Plane Strain\" exclude each other");
-  }
-  mode_ = stress ? PlaneMode::PlaneStress : (strain ? PlaneMode::PlaneStrain : PlaneMode::ThreeD);
   acceptCommonMaterialKeys(p);
   const double E = constants_.youngsModulus, nu = constants_.poissonsRatio;
   const double G = constants_.shearModulus;
@@ -47,6 +43,8 @@ void LinearizedLPS::declareFields(FieldManager& fields) {
 }
 
 void LinearizedLPS::initialize(const ModelState& s, const std::vector<int>& points) {
+  checkDimension(s, "Linearized LPS");
+  checkAssumedInfluenceFunction(s);
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   for (int i : points) {

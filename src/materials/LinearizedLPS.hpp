@@ -17,6 +17,8 @@ class LinearizedLPS : public MaterialModel {
   explicit LinearizedLPS(ListReader& params);
   double density() const override { return density_; }
   double bulkModulus() const override { return constants_.bulkModulus; }
+  double youngsModulus() const override { return constants_.youngsModulus; }
+  double poissonsRatio() const override { return constants_.poissonsRatio; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override {

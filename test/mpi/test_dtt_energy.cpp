@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -39,6 +40,7 @@ struct Plate {
   double dt = 0.1, finalTime = 12.0;
   std::string file = "dtt_plate.txt";
   bool lsjt = false;  // LSJ-T damage (and nu = 0.22) instead of DTT
+  std::string material = "Linearized LPS";
 };
 
 // Points at cell centres of an nx x ny x nz lattice (spacing 1); a pre-crack at y = ny/2 from
@@ -75,9 +77,12 @@ std::string plateDeck(const Plate& p, bool writeFile = true) {
        "        Bottom_Unit_Vector_Z: 0.0\n        Bottom_Length: "
     << 0.25 * p.nx + 1.0 << "\n        Side_Length: " << p.nz + 2.0
     << "\n"
-       "  Materials:\n    M:\n      Material Model: Linearized LPS\n      Density: 1.0\n"
+       "  Materials:\n    M:\n      Material Model: "
+    << p.material << "\n      Density: 1.0\n"
     << (p.lsjt ? "      Young's Modulus: 7.5\n      Poisson's Ratio: 0.22\n"
-               : "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n")
+        : p.material == "Elastic Bond Based"
+            ? "      Bulk Modulus: 5.0\n"
+            : "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n")
     << "  Damage Models:\n    D:\n      Damage Model: " << (p.lsjt ? "LSJ-T" : "DTT")
     << "\n      Critical Stretch: " << p.sc << "\n";
   if (!p.lsjt)
@@ -191,9 +196,14 @@ std::map<long long, std::vector<double>> gatherNodal(Simulation& sim, MPI_Comm c
   return out;
 }
 
-// Theorem 4 and the bond-end symmetry on a run in which the crack grows.
-TEST(DTTEnergy, TotalEnergyNeverIncreasesWhileTheCrackGrows) {
+// Theorem 4 and the bond-end symmetry on a run in which the crack grows, for each material that
+// applies the smooth law at nu = 1/4 (where the state-based ones are bond-based): the linearized
+// model, PMB (Elastic Bond Based) and LPS-T (Elastic).
+class DTTEnergy : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DTTEnergy, TotalEnergyNeverIncreasesWhileTheCrackGrows) {
   Plate p;
+  p.material = GetParam();
   auto sim = makeSimulation(plateDeck(p), MPI_COMM_WORLD);
   // Largest rise of E above its smallest earlier value, and the energy scale.
   double lowest = 0, worstRise = 0, largestStored = 0;
@@ -232,23 +242,29 @@ TEST(DTTEnergy, TotalEnergyNeverIncreasesWhileTheCrackGrows) {
   const double dissipated = totals.front() - totals.back();
   if (rankOf(MPI_COMM_WORLD) == 0)
     std::printf(
-        "DTT plate: E(0) = %.6g, E(end) = %.6g, largest stored %.6g, largest rise of E %.3g "
+        "DTT plate, %s: E(0) = %.6g, E(end) = %.6g, largest stored %.6g, largest rise of E %.3g "
         "(%.3g of the stored energy), of the shadow energy %.3g, broken bond entries %lld, partly "
         "broken seen %lld, dt %.3g of the stable estimate\n",
-        totals.front(), totals.back(), largestStored, worstRise, worstRise / largestStored,
-        worstShadowRise, broken, partialSeen, p.dt / sim->stableTimeStepEstimate());
+        p.material.c_str(), totals.front(), totals.back(), largestStored, worstRise,
+        worstRise / largestStored, worstShadowRise, broken, partialSeen,
+        p.dt / sim->stableTimeStepEstimate());
   // The crack grew through the window, or the test proves nothing.
   EXPECT_GT(broken, 50);
   EXPECT_GT(partialSeen, 50);
   EXPECT_GT(dissipated, 0.0);
-  // Velocity Verlet conserves the shadow energy E - (dt^2/8) sum m |a|^2 exactly for a linear
-  // system (measured: 3e-15 here); bonds that soften or break can only take energy out of it.
-  // So the shadow energy may rise by round-off only (sums of ~1e4 terms: 1e-12 of the energy),
-  // and E itself by at most the Verlet term (dt^2/8) sum m |a|^2 (measured rise 1.3e-4 of the
-  // stored energy, at dt = 0.36 of the stable estimate).
+  // E may rise by at most the Verlet oscillation (dt^2/8) sum m |a|^2: E minus that term is
+  // the shadow energy velocity Verlet conserves for a linear system. Measured rises of E over
+  // the stored energy at dt = 0.36 / 0.18 / 0.09 of the stable estimate: 1.3e-4 / 3.3e-5 /
+  // 8.3e-6 (linearized, LPS-T), 6.7e-4 / 1.7e-4 / 4.3e-5 (PMB): O(dt^2), the integrator's.
   const double roundOff = 1e-12 * largestStored;
-  EXPECT_LE(worstShadowRise, roundOff);
   EXPECT_LE(worstRise, h2 * largestAccelerationTerm + roundOff);
+  // The linearized model is a linear system between damage events, so its shadow energy is
+  // exact: softening and breaking bonds may only take energy out, and it rises by round-off
+  // only (sums of ~1e4 terms: 1e-12 of the energy; measured 3e-15). PMB and LPS-T are
+  // geometrically nonlinear: their shadow energy is printed, not asserted.
+  if (p.material == "Linearized LPS") {
+    EXPECT_LE(worstShadowRise, roundOff);
+  }
   RecordProperty("energy_rise_over_stored", std::to_string(worstRise / largestStored));
   RecordProperty("shadow_energy_rise", std::to_string(worstShadowRise));
 
@@ -267,6 +283,14 @@ TEST(DTTEnergy, TotalEnergyNeverIncreasesWhileTheCrackGrows) {
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }
+
+INSTANTIATE_TEST_SUITE_P(Materials, DTTEnergy,
+                         ::testing::Values("Linearized LPS", "Elastic Bond Based", "Elastic"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           n.erase(std::remove(n.begin(), n.end(), ' '), n.end());
+                           return n;
+                         });
 
 }  // namespace
 }  // namespace peridot
@@ -305,8 +329,10 @@ WindowErrors windowStudy(Plate p) {
     e.damage[w] = std::sqrt(sum[2]);
   }
   if (rankOf(MPI_COMM_WORLD) == 0) {
-    std::printf("Window study (%d x %d x %d, delta %.3f, t = %g): L2 differences to {0.98, 1.02}\n",
-                p.nx, p.ny, p.nz, p.horizon, p.finalTime);
+    std::printf(
+        "Window study, %s (%d x %d x %d, delta %.3f, t = %g): L2 differences to {0.98, "
+        "1.02}\n",
+        p.material.c_str(), p.nx, p.ny, p.nz, p.horizon, p.finalTime);
     std::printf("  window         e_x         e_y         e_damage\n");
     for (int w = 0; w < 3; ++w)
       std::printf("  {%.2f, %.2f}  %.3e  %.3e  %.3e\n", windows[w][0], windows[w][1], e.ux[w],
@@ -316,14 +342,17 @@ WindowErrors windowStudy(Plate p) {
 }
 
 TEST(DTTWindow, DifferencesShrinkAsTheWindowNarrows) {
-  Plate p;
-  const WindowErrors e = windowStudy(p);
-  for (int w = 0; w < 2; ++w) {
-    EXPECT_GT(e.ux[w], e.ux[w + 1]) << w;
-    EXPECT_GT(e.uy[w], e.uy[w + 1]) << w;
-    EXPECT_GT(e.damage[w], e.damage[w + 1]) << w;
+  for (const std::string material : {"Linearized LPS", "Elastic Bond Based"}) {
+    Plate p;
+    p.material = material;
+    const WindowErrors e = windowStudy(p);
+    for (int w = 0; w < 2; ++w) {
+      EXPECT_GT(e.ux[w], e.ux[w + 1]) << w;
+      EXPECT_GT(e.uy[w], e.uy[w + 1]) << w;
+      EXPECT_GT(e.damage[w], e.damage[w + 1]) << w;
+    }
+    EXPECT_GT(e.uy[2], 0.0);  // the windows do change the result
   }
-  EXPECT_GT(e.uy[2], 0.0);  // the windows do change the result
 }
 
 }  // namespace
@@ -334,18 +363,21 @@ namespace {
 
 // The full study (ctest -L long): a larger plate, delta = 3 dx, a longer run.
 TEST(DTTWindow, DISABLED_LongStudyOnALargerPlate) {
-  Plate p;
-  p.nx = 100;
-  p.ny = 40;
-  p.nz = 3;
-  p.horizon = 3.015;
-  p.finalTime = 30.0;
-  p.file = "dtt_plate_long.txt";
-  const WindowErrors e = windowStudy(p);
-  for (int w = 0; w < 2; ++w) {
-    EXPECT_GT(e.ux[w], e.ux[w + 1]) << w;
-    EXPECT_GT(e.uy[w], e.uy[w + 1]) << w;
-    EXPECT_GT(e.damage[w], e.damage[w + 1]) << w;
+  for (const std::string material : {"Linearized LPS", "Elastic Bond Based"}) {
+    Plate p;
+    p.material = material;
+    p.nx = 100;
+    p.ny = 40;
+    p.nz = 3;
+    p.horizon = 3.015;
+    p.finalTime = 30.0;
+    p.file = "dtt_plate_long.txt";
+    const WindowErrors e = windowStudy(p);
+    for (int w = 0; w < 2; ++w) {
+      EXPECT_GT(e.ux[w], e.ux[w + 1]) << material << " " << w;
+      EXPECT_GT(e.uy[w], e.uy[w + 1]) << material << " " << w;
+      EXPECT_GT(e.damage[w], e.damage[w + 1]) << material << " " << w;
+    }
   }
 }
 

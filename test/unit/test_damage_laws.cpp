@@ -6,7 +6,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
+#include <functional>
 #include <random>
+#include <sstream>
 
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
@@ -48,12 +50,13 @@ std::shared_ptr<MaterialModel> linearized(double E, double nu, const std::string
   return createMaterial(r);
 }
 
-std::shared_ptr<MaterialModel> lps(double E, double nu) {
+std::shared_ptr<MaterialModel> lps(double E, double nu, const std::string& plane = "") {
   Teuchos::ParameterList p;
   p.set("Material Model", "Elastic");
   p.set("Density", 1.0);
   p.set("Young's Modulus", E);
   p.set("Poisson's Ratio", nu);
+  if (!plane.empty()) p.set(plane, true);
   ListReader r(p, "Materials -> M");
   return createMaterial(r);
 }
@@ -345,6 +348,78 @@ TEST(LSJTHistory, IntegralAccumulatesAndPersists) {
 
 // ---- Linearized LPS: homogeneous energies ----
 
+// SerialProblem's set-up with a planar evaluator (points in z = 0, volumes with the thickness).
+struct PlanarProblem {
+  PointCloud cloud;
+  Topology topology;
+  std::unique_ptr<FieldManager> fields;
+  std::vector<Block> blocks;
+  Timers timers;
+  std::unique_ptr<ModelEvaluator> evaluator;
+  PlanarProblem(const std::vector<std::array<double, 3>>& points, double horizon,
+                std::shared_ptr<MaterialModel> material, const PeriodicBox& periodic, double volume,
+                double thickness) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      cloud.x.insert(cloud.x.end(), points[i].begin(), points[i].end());
+      cloud.volume.push_back(volume);
+      cloud.blockId.push_back(1);
+      cloud.globalId.push_back(static_cast<long long>(i));
+    }
+    cloud.blockNames[1] = "block_1";
+    cloud.dimension = 2;
+    std::vector<double> h(points.size(), horizon);
+    TopologyOptions options;
+    options.periodic = periodic;
+    topology = buildTopology(cloud, h, options, MPI_COMM_SELF);
+    fields = std::make_unique<FieldManager>(topology);
+    double* x = fields->node("Model_Coordinates", 3);
+    double* y = fields->node("Coordinates", 3);
+    double* v = fields->node("Volume", 1);
+    double* hz = fields->node("Horizon", 1);
+    fields->markPosition("Coordinates");
+    for (int k = 0; k < topology.numOverlap; ++k) {
+      const std::size_t p = topology.overlapCloudIndex[k];
+      const double* shift = topology.shiftOf(k);
+      for (int d = 0; d < 3; ++d) x[3 * k + d] = y[3 * k + d] = cloud.x[3 * p + d] + shift[d];
+      v[k] = volume;
+      hz[k] = horizon;
+    }
+    Block b;
+    b.name = "block_1";
+    b.id = 1;
+    b.material = std::move(material);
+    for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
+    blocks.push_back(b);
+    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    evaluator->setPlanar(thickness);
+    evaluator->initialize();
+  }
+};
+
+// A plane-stress material on a 3D discretization is refused.
+TEST(LinearizedLPSEnergy, PlaneModeMustMatchTheDiscretization) {
+  EXPECT_THROW(Problem({{0, 0, 0}, {1, 0, 0}}, 1.5, linearized(1.0, 0.2, "Plane Stress")),
+               InputError);
+  EXPECT_THROW(
+      PlanarProblem({{0, 0, 0}, {1, 0, 0}}, 1.5, linearized(1.0, 0.2), PeriodicBox(), 1.0, 1.0),
+      InputError);
+}
+
+template <class P>
+double deformedCentreEnergy(P& pr, const double H[3][3]) {
+  double* y = pr.fields->node("Coordinates", 3);
+  const double* x = pr.fields->node("Model_Coordinates", 3);
+  for (int k = 0; k < pr.topology.numOverlap; ++k)
+    for (int a = 0; a < 3; ++a) {
+      y[3 * k + a] = x[3 * k + a];
+      for (int b = 0; b < 3; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
+    }
+  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
+  std::vector<double> w(pr.topology.numOverlap);
+  pr.evaluator->storedEnergyDensity(w.data());
+  return w[0];
+}
+
 // Energy density at the centre of a periodic lattice (3D, or one layer of a planar lattice with
 // cell volume 1 x 1 x thickness) under displacement gradient H.
 double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const double H[3][3],
@@ -360,18 +435,12 @@ double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const
     box.lower[d] = -0.5;
     box.upper[d] = n - 0.5;
   }
-  Problem pr(pts, delta, material, nullptr, box, planar ? thickness : 1.0);
-  double* y = pr.fields->node("Coordinates", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int k = 0; k < pr.topology.numOverlap; ++k)
-    for (int a = 0; a < 3; ++a) {
-      y[3 * k + a] = x[3 * k + a];
-      for (int b = 0; b < 3; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
-    }
-  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
-  std::vector<double> w(pr.topology.numOverlap);
-  pr.evaluator->storedEnergyDensity(w.data());
-  return w[0];
+  if (planar) {
+    PlanarProblem pr(pts, delta, material, box, thickness, thickness);
+    return deformedCentreEnergy(pr, H);
+  }
+  Problem pr(pts, delta, material, nullptr, box);
+  return deformedCentreEnergy(pr, H);
 }
 
 // 3D: the dilatation energy 9 K s^2 / 2 is exact on any lattice; under simple shear and a general
@@ -413,6 +482,13 @@ TEST(LinearizedLPSEnergy, PlaneStressAndPlaneStrainDilatationAndShear) {
         EXPECT_NEAR(0.5 * (wAxis + wDiag) / (2 * G * g * g), 1.0, 1e-9) << plane << " nu " << nu;
         // And the two modes do differ (the lattice is not isotropic), so the mean is informative.
         EXPECT_GT(std::fabs(wAxis - wDiag) / (wAxis + wDiag), 1e-3);
+        // A general small strain: the same energy as the (nonlinear) 2D LPS of the materials,
+        // derived independently (Le et al.), to first order in the strain.
+        const double t = 1e-7;
+        const double general[3][3] = {{t, 2 * t, 0}, {-0.5 * t, -3 * t, 0}, {0, 0, 0}};
+        const double wLin = centreEnergy(linearized(E, nu, plane), delta, general, true, thickness);
+        const double wLPS = centreEnergy(lps(E, nu, plane), delta, general, true, thickness);
+        EXPECT_NEAR(wLin / wLPS, 1.0, 1e-5) << plane << " nu " << nu;
       }
     }
   }
@@ -421,12 +497,56 @@ TEST(LinearizedLPSEnergy, PlaneStressAndPlaneStrainDilatationAndShear) {
   EXPECT_NEAR(m->c1(), 0.0, 1e-6);
 }
 
+// ---- Fracture energy -> critical stretch (the shared FractureEnergy formulas) ----
+
+TEST(DamageLawFractureEnergy, DTTAndLSJTDeriveTheCriticalStretchPerBlock) {
+  const double G0 = 3.8, delta = 1e-3, E = 72e9, nu = 0.22;
+  for (const std::string model : {"DTT", "LSJ-T"}) {
+    auto make = [&]() {
+      Teuchos::ParameterList p;
+      p.set("Damage Model", model);
+      p.set("Fracture Energy", G0);
+      ListReader r(p, "Damage Models -> D");
+      return createDamageModel(r);
+    };
+    auto stretchOf = [](const std::shared_ptr<DamageModel>& d) {
+      if (auto m = std::dynamic_pointer_cast<DTT>(d)) return m->criticalStretch();
+      return std::dynamic_pointer_cast<LSJT>(d)->criticalStretch();
+    };
+    std::ostringstream log;
+    // Paper 001 eq. (24), LPS-T / LSJ-T in plane stress with omega = (1 - zeta/delta)/zeta.
+    auto planeStress = linearized(E, nu, "Plane Stress");
+    planeStress->setInfluenceFunction("Conical Over Zeta");
+    std::shared_ptr<DamageModel> d = make();
+    ASSERT_TRUE(d->bindsToBlock());
+    d->bind(*planeStress, delta, "block_1", log);
+    const double pi = 3.14159265358979323846;
+    EXPECT_NEAR(stretchOf(d), std::sqrt(5 * (1 + nu) * pi * G0 / (12 * E * delta)), 1e-12) << model;
+    // The same for the LPS-T material (Elastic), which has the same bond term.
+    auto lpsT = lps(E, nu, "Plane Stress");
+    lpsT->setInfluenceFunction("Conical Over Zeta");
+    std::shared_ptr<DamageModel> d2 = make();
+    d2->bind(*lpsT, delta, "block_1", log);
+    EXPECT_DOUBLE_EQ(stretchOf(d2), stretchOf(d)) << model;
+    // 3D, omega = 1: G0 = pi alpha s^2 J5 with alpha = 15 G / (4 pi J4): s = sqrt(8 G0 / (25 G
+    // delta)).
+    std::shared_ptr<DamageModel> d3 = make();
+    d3->bind(*linearized(E, nu), delta, "block_1", log);
+    const double G = E / (2 * (1 + nu));
+    EXPECT_NEAR(stretchOf(d3), std::sqrt(8 * G0 / (25 * G * delta)), 1e-12) << model;
+    EXPECT_NE(log.str().find("Critical stretch of block block_1"), std::string::npos);
+    // A variable horizon has no formula.
+    EXPECT_THROW(make()->bind(*linearized(E, nu), -1.0, "block_1", log), InputError);
+  }
+}
+
 // ---- Linearized LPS: force = -gradient of the stored energy ----
 
 // A random cloud, random displacements, bond damage 0 or 1 at random (where eq. 18's mu^2 on the
 // dilatation term equals mu) and the linear or the smooth law: V_k f_k = -dE/du_k with
 // E = sum V W, by central differences.
-TEST(LinearizedLPSForce, IsMinusTheGradientOfTheStoredEnergy) {
+void checkForceIsMinusGradient(const std::function<std::shared_ptr<MaterialModel>()>& makeMaterial,
+                               bool binaryDamage, const std::string& name) {
   for (bool smooth : {false, true}) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> pos(0.0, 3.0), disp(-2e-3, 2e-3), unit(0, 1);
@@ -435,7 +555,7 @@ TEST(LinearizedLPSForce, IsMinusTheGradientOfTheStoredEnergy) {
     // A damage model only to have the bond damage array; its S_c is never reached (linear) or
     // it supplies the smooth law with a window the random stretches cross.
     std::shared_ptr<DamageModel> damage = smooth ? dtt(1e-3, 0.3, 1.5) : dtt(1.0);
-    Problem pr(pts, 1.4, linearized(2.0, 0.2), damage);
+    Problem pr(pts, 1.4, makeMaterial(), damage);
     double* y = pr.fields->node("Coordinates", 3);
     for (int k = 0; k < 3 * pr.topology.numOwned; ++k) y[k] += disp(rng);
     pr.evaluator->evaluate(1.0);  // the smooth law sets some damages in (0, 1): round them
@@ -445,7 +565,8 @@ TEST(LinearizedLPSForce, IsMinusTheGradientOfTheStoredEnergy) {
       for (std::int64_t b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
         const int j = t.neighbors[b];
         if (j < i) continue;
-        const float value = unit(rng) < 0.2 ? 1.0f : 0.0f;
+        const float value = binaryDamage ? (unit(rng) < 0.2 ? 1.0f : 0.0f)
+                                         : static_cast<float>(unit(rng) < 0.5 ? 0.0 : unit(rng));
         d[b] = value;
         for (std::int64_t r = t.bondOffsets[j]; r < t.bondOffsets[j + 1]; ++r)
           if (t.neighbors[r] == i) d[r] = value;
@@ -478,8 +599,30 @@ TEST(LinearizedLPSForce, IsMinusTheGradientOfTheStoredEnergy) {
         scale = std::max(scale, std::fabs(f[3 * i + a]));
       }
     ASSERT_GT(scale, 0.0);
-    EXPECT_LT(worst, 1e-6 * scale) << (smooth ? "smooth" : "linear") << " law";
+    EXPECT_LT(worst, 1e-6 * scale) << name << ", " << (smooth ? "smooth" : "linear") << " law";
   }
+}
+
+TEST(LinearizedLPSForce, IsMinusTheGradientOfTheStoredEnergy) {
+  checkForceIsMinusGradient([] { return linearized(2.0, 0.2); }, true, "Linearized LPS");
+  // At nu = 1/4 (c1 = 0) eq. 18 is variational for any damage in [0, 1].
+  checkForceIsMinusGradient([] { return linearized(2.0, 0.25); }, false, "Linearized LPS nu 1/4");
+}
+
+// The same check on the materials branch's smooth-law kernels (PMB, LPS-T), with partial
+// damage: the energy balance of Theorem 4 needs force = -grad (stored energy).
+TEST(SmoothLawMaterials, ForceIsMinusTheGradientOfTheStoredEnergy) {
+  checkForceIsMinusGradient(
+      [] {
+        Teuchos::ParameterList p;
+        p.set("Material Model", "Elastic Bond Based");
+        p.set("Density", 1.0);
+        p.set("Bulk Modulus", 2.0);
+        ListReader r(p, "Materials -> M");
+        return createMaterial(r);
+      },
+      false, "PMB");
+  checkForceIsMinusGradient([] { return lps(2.0, 0.25); }, false, "LPS-T nu 1/4");
 }
 
 }  // namespace
