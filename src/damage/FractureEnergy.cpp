@@ -68,7 +68,8 @@ double criticalStretchFromFractureEnergy(const MaterialModel& material, double h
         "normalized PMB, sqrt(pi G0 J1 / (4 kappa J2)), kappa = " + std::to_string(kappa) + where;
     return std::sqrt(kPi * G0 * J(1) / (4.0 * kappa * J(2)));
   }
-  if (family == "LPS") {
+  // The linearized LPS (LSJ-T) has the LPS bond term alpha/2 sum omega zeta^2 eps^2 V.
+  if (family == "LPS" || family == "linearized LPS") {
     const double E = material.youngsModulus(), nu = material.poissonsRatio();
     const double mu = E / (2.0 * (1.0 + nu));
     if (!planar) {

@@ -1,0 +1,121 @@
+#include "damage/DTT.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "core/Format.hpp"
+#include "damage/FractureEnergy.hpp"
+
+namespace peridot {
+
+DTT::DTT(ListReader& p) : path_(p.path()) {
+  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
+    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
+  }
+  if (p.has("Critical Stretch")) {
+    criticalStretch_ = p.positiveNumber("Critical Stretch");
+  } else {
+    fractureEnergy_ = p.positiveNumber("Fracture Energy");
+  }
+  s0PlusFactor_ = p.number("S0 Plus Over Critical Stretch", 0.95);
+  s1PlusFactor_ = p.number("S1 Plus Over Critical Stretch", 1.05);
+  s0Minus_ = p.number("S0 Minus", -0.98);
+  s1Minus_ = p.number("S1 Minus", -0.99);
+  // Paper 002: -1 < S1- < S0- < 0 <= S0+ < S1+, and S_c lies in [S0+, S1+] (Remark 5).
+  if (!(s0PlusFactor_ >= 0.0 && s0PlusFactor_ <= 1.0)) {
+    throw InputError(p.pathOf("S0 Plus Over Critical Stretch"),
+                     "expected a number in [0, 1] (S0+ = factor x S_c, 0 <= S0+ <= S_c), got " +
+                         formatNumber(s0PlusFactor_));
+  }
+  if (!(s1PlusFactor_ >= 1.0 && s1PlusFactor_ > s0PlusFactor_ && std::isfinite(s1PlusFactor_))) {
+    throw InputError(p.pathOf("S1 Plus Over Critical Stretch"),
+                     "expected a finite number >= 1 and greater than S0 Plus Over Critical "
+                     "Stretch (" +
+                         formatNumber(s0PlusFactor_) + "), got " + formatNumber(s1PlusFactor_));
+  }
+  if (!(s0Minus_ > -1.0 && s0Minus_ < 0.0)) {
+    throw InputError(p.pathOf("S0 Minus"),
+                     "expected a number in (-1, 0), got " + formatNumber(s0Minus_));
+  }
+  if (!(s1Minus_ > -1.0 && s1Minus_ < s0Minus_)) {
+    throw InputError(p.pathOf("S1 Minus"),
+                     "expected a number in (-1, S0 Minus = " + formatNumber(s0Minus_) + "), got " +
+                         formatNumber(s1Minus_));
+  }
+  if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
+    throw InputError(p.pathOf("Thermal Expansion Coefficient"),
+                     "thermal strains are not supported by Peridot yet");
+  }
+  p.boolean("Verbose", false);
+}
+
+void DTT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
+               std::ostream& log) {
+  if (fractureEnergy_ <= 0) return;
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+}
+
+BondLaw DTT::bondLaw() const {
+  BondLaw law;
+  law.kind = BondLaw::Kind::Smooth;
+  law.s1Minus = s1Minus_;
+  law.s0Minus = s0Minus_;
+  law.s0Plus = s0PlusFactor_ * criticalStretch_;
+  law.s1Plus = s1PlusFactor_ * criticalStretch_;
+  return law;
+}
+
+void DTT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* y = s.y;
+  const double* zeta = s.bondLength;
+  const double s0 = s0PlusFactor_ * criticalStretch_, s1 = s1PlusFactor_ * criticalStretch_;
+  for (int i : points) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      // Both ends of a bond form the same stretch bit for bit: y_i - y_j = -(y_j - y_i)
+      // exactly, and the squares and the reference length are the same.
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+      const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
+      // 1 - mu(S*) = max over the history of 1 - mu(s); rounding to float is monotone too.
+      const float broken = static_cast<float>(dttBrokenFraction(stretch, s0, s1));
+      bondDamage[b] = std::max(bondDamage[b], broken);
+    }
+  }
+}
+
+PERIDOT_REGISTER_DAMAGE(
+    "DTT", DTT,
+    "Du-Tao-Tian bond breaking (paper 002): continuous force scalar F(s) and damage factor "
+    "mu(S*) of the history maximum stretch; needs a material that applies the smooth law",
+    (std::vector<ParameterDoc>{
+        {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
+        {"Fracture Energy",
+         "positive number: G0, from which S_c is derived per block from its material, dimension "
+         "and influence function (doc/theory/fracture-energy.md)"},
+        {"S0 Plus Over Critical Stretch",
+         "number in [0, 1], default 0.95: S0+ = this x S_c, where the force starts to soften and "
+         "the bond to break"},
+        {"S1 Plus Over Critical Stretch",
+         "number >= 1 and > S0 Plus Over Critical Stretch, default 1.05: S1+ = this x S_c, "
+         "where the bond is fully broken"},
+        {"S0 Minus",
+         "number in (-1, 0), default -0.98: absolute compressive stretch where the force starts "
+         "to vanish (against interpenetration; no damage in compression)"},
+        {"S1 Minus", "number in (-1, S0 Minus), default -0.99: absolute stretch of zero force"},
+        {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
+        {"Verbose", "bool, default false"}}))
+
+}  // namespace peridot

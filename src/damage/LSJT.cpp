@@ -1,0 +1,90 @@
+#include "damage/LSJT.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "damage/FractureEnergy.hpp"
+
+namespace peridot {
+
+double lsjtDamageFactor(double integral, double xc) {
+  if (!(integral > 0.0)) return 1.0;
+  if (!(integral < xc)) return 0.0;
+  return std::exp(1.0 - 1.0 / (1.0 - std::pow(integral / xc, 2.01)));
+}
+
+LSJT::LSJT(ListReader& p) : path_(p.path()) {
+  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
+    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
+  }
+  if (p.has("Critical Stretch")) {
+    criticalStretch_ = p.positiveNumber("Critical Stretch");
+  } else {
+    fractureEnergy_ = p.positiveNumber("Fracture Energy");
+  }
+  p.boolean("Verbose", false);
+}
+
+void LSJT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
+                std::ostream& log) {
+  if (fractureEnergy_ <= 0) return;
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+}
+
+void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
+  std::vector<double>& history = s.fields->bond(kHistoryIntegral);
+  // The first evaluation is the initial state at t0: the integral over [t0, t0] is zero. Each
+  // later one closes a step [t_{n-1}, t_n] with the rate at its end (the current stretch).
+  const double dt = started_ ? s.dt : 0.0;
+  started_ = true;
+  if (dt == 0.0) return;
+  const double sc = criticalStretch_;
+  const double xc = lsjtOverstretchRate(1.05 * sc, sc) * s.dt;
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* x = s.x;
+  const double* y = s.y;
+  const double* zeta = s.bondLength;
+  double* X = history.data();
+  for (int i : points) {
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      // Linearized strain xi.eta/|xi|^2; the same bits from both ends (every difference flips
+      // sign exactly and the products do not change).
+      double dot = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double xi = x[3 * j + d] - x[3 * i + d];
+        const double eta = (y[3 * j + d] - y[3 * i + d]) - xi;
+        dot += xi * eta;
+      }
+      const double eps = dot / (zeta[b] * zeta[b]);
+      if (!(eps >= sc)) continue;  // j_s = 0: nothing accumulates (the common case)
+      X[b] += dt * lsjtOverstretchRate(eps, sc);
+      const float broken = static_cast<float>(1.0 - lsjtDamageFactor(X[b], xc));
+      bondDamage[b] = std::max(bondDamage[b], broken);
+    }
+  }
+}
+
+PERIDOT_REGISTER_DAMAGE(
+    "LSJ-T", LSJT,
+    "Aguiar-Patriota LSJ-T damage (paper 001): damage factor h of the time integral of the "
+    "overstretch rate j_s(eps) of each bond; with \"Linearized LPS\" it is their LSJ-T model",
+    (std::vector<ParameterDoc>{
+        {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
+        {"Fracture Energy",
+         "positive number: G0, from which S_c is derived per block from its material, dimension "
+         "and influence function (doc/theory/fracture-energy.md)"},
+        {"Verbose", "bool, default false"}}))
+
+}  // namespace peridot

@@ -1,0 +1,186 @@
+#include "materials/LinearizedLPS.hpp"
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+LinearizedLPS::LinearizedLPS(ListReader& p) {
+  density_ = p.positiveNumber("Density");
+  mode_ = readPlaneMode(p);
+  constants_ = readTwoElasticConstants(p);
+  acceptCommonMaterialKeys(p);
+  const double E = constants_.youngsModulus, nu = constants_.poissonsRatio;
+  const double G = constants_.shearModulus;
+  const double lambda = constants_.bulkModulus - 2.0 * G / 3.0;
+  // Matching W = A/2 theta^2 + c2/2 sum omega |xi|^2 eps^2 V to the continuum energy of every
+  // homogeneous strain (doc/theory/damage.md): m c2 = d (d + 2) G, A = (lambda_eff - G)(d/kappa)^2,
+  // c1 = A kappa, with lambda_eff the in-plane Lame constant.
+  switch (mode_) {
+    case PlaneMode::ThreeD:
+      kappa_ = 3.0;
+      c2m_ = 15.0 * G;
+      c1_ = 3.0 * (lambda - G);
+      break;
+    case PlaneMode::PlaneStrain:
+      kappa_ = 2.0;
+      c2m_ = 8.0 * G;
+      c1_ = 2.0 * (lambda - G);
+      break;
+    case PlaneMode::PlaneStress:
+      // theta is the 3D dilatation: the out-of-plane strain is -nu/(1 - nu) tr(eps_2D).
+      kappa_ = 2.0 * (1.0 - 2.0 * nu) / (1.0 - nu);
+      c2m_ = 8.0 * G;
+      c1_ = E * (1.0 - 3.0 * nu) / ((1.0 + nu) * (2.0 * nu - 1.0));
+      break;
+  }
+}
+
+void LinearizedLPS::declareFields(FieldManager& fields) {
+  weightedVolume_ = fields.node(kWeightedVolume, 1);
+  dilatation_ = fields.node(kDilatation, 1);
+  alpha_ = fields.node(kAlpha, 1);
+  beta_ = fields.node(kBeta, 1);
+}
+
+void LinearizedLPS::initialize(const ModelState& s, const std::vector<int>& points) {
+  checkDimension(s, "Linearized LPS");
+  checkAssumedInfluenceFunction(s);
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  for (int i : points) {
+    double m = 0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      m += omega * s.bondLength[b] * s.bondLength[b] * s.volume[neighbors[b]];
+    }
+    weightedVolume_[i] = m;
+    // A point without bonds has no weighted volume and exerts no force.
+    alpha_[i] = m > 0 ? c2m_ / m : 0.0;
+    beta_[i] = m > 0 ? c1_ / m : 0.0;
+  }
+}
+
+void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& points) {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* x = s.x;
+  const double* y = s.y;
+  for (int i : points) {
+    const double m = weightedVolume_[i];
+    double sum = 0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const int j = neighbors[b];
+      // omega |xi|^2 eps = omega xi.eta
+      double dot = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double xi = x[3 * j + d] - x[3 * i + d];
+        dot += xi * ((y[3 * j + d] - y[3 * i + d]) - xi);
+      }
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      sum += omega * mu * dot * s.volume[j];
+    }
+    dilatation_[i] = m > 0 ? kappa_ * sum / m : 0.0;
+  }
+}
+
+template <bool Smooth>
+void LinearizedLPS::force(const ModelState& s, const std::vector<int>& points) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* x = s.x;
+  const double* y = s.y;
+  const double* zeta = s.bondLength;
+  const double* theta = dilatation_;
+  const double* alpha = alpha_;
+  const double* beta = beta_;
+  const BondLaw law = s.bondLaw;
+  for (int i : points) {
+    double f[3] = {0, 0, 0};
+    const double betaThetaI = beta[i] * theta[i], alphaI = alpha[i];
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      double xi[3], dot = 0;
+      for (int d = 0; d < 3; ++d) {
+        xi[d] = x[3 * j + d] - x[3 * i + d];
+        dot += xi[d] * ((y[3 * j + d] - y[3 * i + d]) - xi[d]);
+      }
+      const double eps = dot / (zeta[b] * zeta[b]);
+      const double F = Smooth ? law.forceScalar(eps) : eps;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      // t_i<xi> + t_j<-xi> over |xi| (the direction xi/|xi| takes the |xi| of t): paper 001
+      // eq. 18 as printed, mu twice on the dilatation term.
+      double ti = mu * betaThetaI + alphaI * F;
+      double tj = mu * beta[j] * theta[j] + alpha[j] * F;
+      if (s.bondSides) {  // an end whose horizon does not hold the bond exerts no force state
+        ti *= s.bondSides[b] & 1;
+        tj *= (s.bondSides[b] >> 1) & 1;
+      }
+      const double t = mu * omega * (ti + tj) * s.volume[j];
+      f[0] += t * xi[0];
+      f[1] += t * xi[1];
+      f[2] += t * xi[2];
+    }
+    for (int d = 0; d < 3; ++d) s.forceDensity[3 * i + d] = f[d];
+  }
+}
+
+void LinearizedLPS::computeForce(const ModelState& s, const std::vector<int>& points) {
+  if (s.bondLaw.kind == BondLaw::Kind::Smooth) {
+    force<true>(s, points);
+  } else {
+    force<false>(s, points);
+  }
+}
+
+void LinearizedLPS::storedEnergyDensity(const ModelState& s, const std::vector<int>& points,
+                                        double* energyDensity) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  // W = c1 / (2 kappa) theta^2 + c2 sum omega |xi|^2 p(eps) mu V, p' = F (p = eps^2/2 when
+  // linear): the potential of the force with mu once on the dilatation term.
+  const double a = c1_ / (2.0 * kappa_);
+  for (int i : points) {
+    double bonds = 0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const int j = neighbors[b];
+      double dot = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double xi = s.x[3 * j + d] - s.x[3 * i + d];
+        dot += xi * ((s.y[3 * j + d] - s.y[3 * i + d]) - xi);
+      }
+      const double z2 = s.bondLength[b] * s.bondLength[b];
+      const double eps = dot / z2;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      bonds += omega * z2 * s.bondLaw.potential(eps) * mu * s.volume[j];
+    }
+    energyDensity[i] = a * dilatation_[i] * dilatation_[i] + alpha_[i] * bonds;
+  }
+}
+
+PERIDOT_REGISTER_MATERIAL(
+    "Linearized LPS", LinearizedLPS,
+    "Linearized peridynamic solid (paper 001 eqs. 17-19): linearized bond strain and "
+    "dilatation, forces along the reference bond; 3D, plane stress or plane strain; with "
+    "\"LSJ-T\" damage it is paper 001's LSJ-T model",
+    (std::vector<ParameterDoc>{
+        {"Density", "positive number, required: mass density"},
+        {"Bulk Modulus", "positive number: K (exactly two of K, G, E, nu)"},
+        {"Shear Modulus", "positive number: G"},
+        {"Young's Modulus", "positive number: E"},
+        {"Poisson's Ratio", "number in (-1, 0.5): nu"},
+        {"Plane Stress",
+         "bool, default false: 2D plane stress (E and nu are the 3D constants; the dilatation is "
+         "the 3D one)"},
+        {"Plane Strain", "bool, default false: 2D plane strain"},
+        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
+        {"Compute Partial Stress", "bool, default false: true is not supported yet"},
+        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+
+}  // namespace peridot
