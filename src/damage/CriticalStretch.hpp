@@ -11,6 +11,7 @@ class CriticalStretch : public DamageModel {
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
   double criticalStretch() const { return criticalStretch_; }
+  double fusableCriticalStretch() const override { return criticalStretch_; }
   bool bindsToBlock() const override { return fractureEnergy_ > 0; }
   // With `Fracture Energy`, derives the critical stretch from the block's material and horizon.
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,

@@ -23,6 +23,10 @@ class DamageModel {
                     const std::string& /*blockName*/, std::ostream& /*log*/) {}
   // The force law the block's material must apply with this damage (see BondLaw.hpp).
   virtual BondLaw bondLaw() const { return BondLaw(); }
+  // A positive critical stretch when the model is nothing but "break for good when the stretch
+  // exceeds it": a material that fuses that check into its force loop may then replace
+  // computeDamage (MaterialModel::fusesCriticalStretch).
+  virtual double fusableCriticalStretch() const { return 0.0; }
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -164,7 +164,8 @@ void ModelEvaluator::evaluate(double dt) {
   if (bondDamage_) {
     Timers::Scope t(timers_, "Damage");
     for (auto& b : blocks_)
-      if (b.damage) b.damage->computeDamage(state_, b.points, bondDamage_);
+      if (b.damage && !fusesCriticalStretch(b))
+        b.damage->computeDamage(state_, b.points, bondDamage_);
   }
   if (!syncAfterPrecompute_.empty()) {
     {
@@ -180,8 +181,20 @@ void ModelEvaluator::evaluate(double dt) {
   Timers::Scope t(timers_, "Force");
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
+    const bool fused = fusesCriticalStretch(b);
+    state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
+    state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
     b.material->computeForce(state_, b.points);
   }
+  state_.breakableBondDamage = nullptr;
+  state_.fusedCriticalStretch = 0.0;
+}
+
+bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {
+  // Only when nothing between the damage and force phases reads this block's bond damage: the
+  // bond-based models have no precompute, and each point's bonds are its own entries.
+  return fuseCriticalStretch_ && b.damage && b.damage->fusableCriticalStretch() > 0 &&
+         b.material->fusesCriticalStretch();
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {

@@ -22,6 +22,9 @@ class ModelEvaluator {
     state_.dimension = 2;
     state_.thickness = thickness;
   }
+  // Whether bond-based blocks with "Critical Stretch" check the stretch inside their force loop
+  // (default) or in a separate damage pass; both give the same bits (bench_roofline measures).
+  void setFuseCriticalStretch(bool fuse) { fuseCriticalStretch_ = fuse; }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();
@@ -42,7 +45,10 @@ class ModelEvaluator {
   std::string influenceFunction_;
   Timers& timers_;
   ModelState state_;
+  bool fusesCriticalStretch(const Block& b) const;
+
   float* bondDamage_ = nullptr;
+  bool fuseCriticalStretch_ = true;
   std::vector<std::string> syncAfterPrecompute_;
 };
 

@@ -8,7 +8,10 @@
 // horizon holds the bond), s the bond stretch, times (1 - bond damage) with kDamage, omega the
 // bond influence with kInfluence (else 1), and the block's bond law: F(s) = s, p(s) = s^2/2
 // (Linear) or DTT's smooth F and p (kSmooth). The Linear loop is the one Peridot always had,
-// operation for operation.
+// operation for operation. With kBreak the loop also applies the block's critical stretch (the
+// "Critical Stretch" damage model, fused: one pass over the bonds instead of two): a bond whose
+// stretch exceeds it gets bond damage 1 before its force is taken, computed exactly as the
+// separate damage loop computes it, so the bits do not change.
 #include <cmath>
 #include <vector>
 
@@ -16,7 +19,8 @@
 
 namespace peridot {
 
-template <bool kDamage, bool kSides, bool kOverLength, bool kInfluence, bool kSmooth>
+template <bool kDamage, bool kSides, bool kOverLength, bool kInfluence, bool kSmooth,
+          bool kBreak = false>
 void pairForceLoop(const ModelState& s, const std::vector<int>& points, const double* c) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
@@ -24,6 +28,8 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
   const float* damage = s.bondDamage;
+  float* breakable = s.breakableBondDamage;
+  const double criticalStretch = s.fusedCriticalStretch;
   const unsigned char* sides = s.bondSides;
   const double* influence = s.influence;
   const BondLaw law = s.bondLaw;
@@ -35,7 +41,13 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       double c2 = kSides ? ci * (sides[b] & 1) + c[j] * ((sides[b] >> 1) & 1) : ci + c[j];
-      if (kDamage) c2 *= 1.0 - damage[b];
+      if constexpr (kBreak) {
+        const float d = (dY - zeta[b]) / zeta[b] > criticalStretch ? 1.0f : breakable[b];
+        breakable[b] = d;
+        c2 *= 1.0 - d;
+      } else if (kDamage) {
+        c2 *= 1.0 - damage[b];
+      }
       if (kInfluence) c2 *= influence[b];
       double scale;
       if constexpr (kSmooth) {
@@ -45,9 +57,13 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
         scale = dY > 0 ? c2 * F * volume[j] / denominator : 0.0;
       } else {
         // (c2 / 2) s V_j / |Y| in one division; coincident ends have no direction and, by
-        // symmetry, no force.
-        const double denominator = kOverLength ? 2.0 * zeta[b] * zeta[b] * dY : 2.0 * zeta[b] * dY;
-        scale = dY > 0 ? c2 * (dY - zeta[b]) * volume[j] / denominator : 0.0;
+        // symmetry, no force. The division always runs (on 1 for coincident ends) and the
+        // select follows, so the loop has no branch and vectorizes; same bits for dY > 0.
+        const double safe = dY > 0 ? dY : 1.0;
+        const double denominator =
+            kOverLength ? 2.0 * zeta[b] * zeta[b] * safe : 2.0 * zeta[b] * safe;
+        const double q = c2 * (dY - zeta[b]) * volume[j] / denominator;
+        scale = dY > 0 ? q : 0.0;
       }
       f0 += scale * Y0;
       f1 += scale * Y1;
@@ -61,7 +77,9 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
 
 template <bool kOverLength, bool kDamage, bool kSides, bool kInfluence>
 void pairForceWithLaw(const ModelState& s, const std::vector<int>& points, const double* c) {
-  if (s.bondLaw.kind == BondLaw::Kind::Smooth)
+  if (kDamage && s.breakableBondDamage && s.bondLaw.kind == BondLaw::Kind::Linear)
+    pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false, true>(s, points, c);
+  else if (s.bondLaw.kind == BondLaw::Kind::Smooth)
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, true>(s, points, c);
   else
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false>(s, points, c);

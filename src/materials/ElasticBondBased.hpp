@@ -31,6 +31,7 @@ class ElasticBondBased : public MaterialModel {
     return name == "One" || name == "Conical" || name == "Conical Over Zeta";
   }
   bool acceptsSmoothBondLaw() const override { return true; }
+  bool fusesCriticalStretch() const override { return true; }
 
   static constexpr const char* kMicromodulus = "PMB_Micromodulus";
 

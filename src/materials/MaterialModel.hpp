@@ -29,6 +29,11 @@ struct ModelState {
   // bit 1 if within the neighbour's (Topology::bondSides); null when all bonds are two-sided.
   const unsigned char* bondSides = nullptr;
   double dt = 0.0;
+  // Set by the evaluator while a block's force is computed when the block's critical-stretch
+  // check is fused into the material's bond loop (see MaterialModel::fusesCriticalStretch):
+  // bonds whose stretch exceeds it break (bond damage 1) before their force is taken.
+  float* breakableBondDamage = nullptr;
+  double fusedCriticalStretch = 0.0;
   // 2 for a planar run (points in z = 0; volumes already include the thickness), else 3.
   int dimension = 3;
   double thickness = 1.0;  // out-of-plane thickness of a 2D run
@@ -77,6 +82,9 @@ class MaterialModel {
   virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }
   // Whether the model applies a Smooth BondLaw (DTT); damage models that need one check this.
   virtual bool acceptsSmoothBondLaw() const { return false; }
+  // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
+  // the bonds instead of two; the same bits as the separate damage loop).
+  virtual bool fusesCriticalStretch() const { return false; }
   // Young's modulus and Poisson's ratio of the material as the deck defines it (for a bond-based
   // material, nu is the fixed value of its plane mode); 0 where a model does not define them.
   virtual double youngsModulus() const { return 0.0; }

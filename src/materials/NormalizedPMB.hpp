@@ -23,6 +23,7 @@ class NormalizedPMB : public MaterialModel {
   // The normalization is a discrete sum: any influence function is consistent.
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
   bool acceptsSmoothBondLaw() const override { return true; }
+  bool fusesCriticalStretch() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }
