@@ -270,6 +270,12 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 
 void Simulation::checkDimension() {
   planar_ = cloud_.dimension == 2;
+  for (const auto& c : config_.conditions) {
+    if (planar_ && c.coordinate == 2) {
+      throw InputError(c.path + " -> Coordinate",
+                       "z in a 2D discretization; points move in the x-y plane only");
+    }
+  }
   const char* modeName[3] = {"3D", "plane stress", "plane strain"};
   for (const auto& g : config_.blocks) {
     const PlaneMode mode = config_.materials.at(g.material)->planeMode();
@@ -289,12 +295,6 @@ void Simulation::checkDimension() {
     }
   }
   if (!planar_) return;
-  for (const auto& c : config_.conditions) {
-    if (c.coordinate == 2) {
-      throw InputError(c.path + " -> Coordinate",
-                       "z in a 2D discretization; points move in the x-y plane only");
-    }
-  }
   if (config_.contact.enabled) {
     throw InputError(config_.contact.path,
                      "contact in a 2D discretization is not supported yet (its spring constant "

@@ -243,3 +243,15 @@ peridot_baddeck(compute_of_global_variable DECK compute_of_global_variable.yaml
   EXPECT [[Compute Class Parameters -> Energy Sum -> Variable: "Global_Kinetic_Energy" is a global variable]])
 peridot_baddeck(periodic_box_too_short DECK periodic_box_too_short.yaml
   EXPECT [[Discretization -> Periodic Y: the periodic box (2) must be longer than the neighbourhood reach]])
+
+# ---- planar (2D) discretizations ----
+peridot_baddeck(planar_thickness_in_3d DECK planar_thickness_in_3d.yaml
+  EXPECT [[Discretization -> Thickness: only for 2D discretizations]])
+peridot_baddeck(planar_z_condition DECK planar_z_condition.yaml
+  EXPECT [[Boundary Conditions -> Left Velocity -> Coordinate: z in a 2D discretization]])
+peridot_baddeck(planar_3d_material DECK planar_3d_material.yaml
+  EXPECT [[Blocks -> My Blocks -> Material: material "My Material" is 3D but the discretization is 2D; set "Plane Stress: true" or "Plane Strain: true"]])
+peridot_baddeck(planar_periodic_z DECK planar_periodic_z.yaml
+  EXPECT [[Discretization -> Periodic Z: a 2D discretization has no z extent to repeat]])
+peridot_baddeck(planar_dimension_pdquickgrid DECK planar_dimension_pdquickgrid.yaml
+  EXPECT [[Discretization -> Dimension: only for Text File discretizations]])
