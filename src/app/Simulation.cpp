@@ -549,6 +549,7 @@ void Simulation::run() {
       log_ << ", bond imbalance (max/avg): " << text;
     }
     log_ << "\n";
+    if (planar_) log_ << "Planar (2D) run, thickness " << cloud_.thickness << "\n";
     log_ << "Stable time step estimate: " << stableDt_ << "\n";
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";

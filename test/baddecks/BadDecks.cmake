@@ -98,7 +98,7 @@ peridot_baddeck(truncated_exodus_data DECK truncated_exodus.xml TRUNCATE 5000
 peridot_baddeck(truncated_exodus_header DECK truncated_exodus.xml TRUNCATE 1000
   EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "cut.g": ]] ALSO [[truncated or corrupt]])
 peridot_baddeck(exodus_shell_element DECK exodus_shell_element.xml CDL shell.cdl
-  EXPECT [[Discretization -> Input Mesh File: Exodus mesh "shell.g": element block 1 ("block_1") has element type "SHELL4"]])
+  EXPECT [[Discretization -> Input Mesh File: Exodus mesh "shell.g": element block 1 ("block_1", SHELL4) is a planar element block, but node 3 has z = 1]])
 peridot_baddeck(text_mesh_bad_line DECK text_mesh_bad_line.xml
   EXPECT [[Discretization -> Input Mesh File: text mesh "bad_line.txt" line 5: expected five numbers "x y z block_id volume"]])
 peridot_baddeck(pdquickgrid_zero_points DECK pdquickgrid_zero_points.yaml

@@ -28,6 +28,13 @@ class PlaneStressTestPMB : public ElasticBondBased {
  public:
   using ElasticBondBased::ElasticBondBased;
   PlaneMode planeMode() const override { return PlaneMode::PlaneStress; }
+  void initialize(const ModelState& state, const std::vector<int>& points) override {
+    seenDimension = state.dimension;  // what the run told the models
+    seenThickness = state.thickness;
+    ElasticBondBased::initialize(state, points);
+  }
+  static inline int seenDimension = 0;
+  static inline double seenThickness = 0.0;
 };
 
 PERIDOT_REGISTER_MATERIAL("Test Plane Stress PMB", PlaneStressTestPMB,
@@ -171,6 +178,8 @@ TEST(Planar, RunIsIdenticalToTheSerialRunAndWritesA2DFile) {
   {
     auto sim = makeSimulation(plateDeck(base + "_all", "Test Plane Stress PMB"), MPI_COMM_WORLD);
     EXPECT_LE(sim->timeStep(), sim->stableTimeStepEstimate());
+    EXPECT_EQ(PlaneStressTestPMB::seenDimension, 2);
+    EXPECT_EQ(PlaneStressTestPMB::seenThickness, 0.1);
     sim->run();
     // Nothing moved out of the plane.
     std::vector<double> u;
