@@ -105,6 +105,45 @@ TEST(Planar, NeighbourhoodsAreDisksOnAnyRankCount) {
   }
 }
 
+TEST(Planar, CrackLineAsABondFilterStraddlingThePlane) {
+  // A crack along x = 0.5 for 0.1 <= y <= 0.4: a rectangle normal to x spanning z in [-1, 1].
+  const PointCloud cloud = randomPlanarCloud(1200, 5);
+  const double h = 0.05;
+  std::vector<double> horizon(cloud.size(), h);
+  std::vector<BondFilter> filters(1);
+  BondFilter& f = filters[0];
+  f.normal[0] = 1.0;
+  f.normal[2] = 0.0;
+  f.lowerLeftCorner[0] = 0.5;
+  f.lowerLeftCorner[1] = 0.1;
+  f.lowerLeftCorner[2] = -1.0;
+  f.bottomUnitVector[0] = 0.0;
+  f.bottomUnitVector[1] = 1.0;
+  f.bottomLength = 0.3;
+  f.sideLength = 2.0;  // along normal x bottom = +z
+  TopologyOptions options;
+  options.bondFilters = &filters;
+  Topology t = buildTopology(cloud, horizon, options, MPI_COMM_WORLD);
+  long long kept = 0, cut = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    for (std::size_t j = 0; j < cloud.size(); ++j) {
+      if (i == j) continue;
+      const double dx = cloud.x[3 * j] - cloud.x[3 * i],
+                   dy = cloud.x[3 * j + 1] - cloud.x[3 * i + 1];
+      if (dx * dx + dy * dy > h * h) continue;
+      // Independent of BondFilter::cuts: the segment crosses x = 0.5 at a y in [0.1, 0.4].
+      const double xi = cloud.x[3 * i], xj = cloud.x[3 * j];
+      bool crosses = (xi - 0.5) * (xj - 0.5) < 0;
+      if (crosses) {
+        const double y = cloud.x[3 * i + 1] + (0.5 - xi) / (xj - xi) * dy;
+        crosses = y >= 0.1 && y <= 0.4;
+      }
+      (crosses ? cut : kept) += 1;
+    }
+  EXPECT_GT(cut, 0);
+  EXPECT_EQ(t.globalNumBonds, kept);
+}
+
 TEST(Planar, PeriodicImagesInThePlane) {
   const PointCloud cloud = randomPlanarCloud(1200, 11);
   const double h = 0.07;
