@@ -16,31 +16,69 @@
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
-#include "materials/ElasticBondBased.hpp"
+#include "materials/MaterialModel.hpp"
 #include "output/ExodusCompare.hpp"
 #include "parallel/Topology.hpp"
 
 namespace peridot {
 
-// A test-only plane-stress material: the PMB kernel (its 3D micromodulus is beside the point
-// here) declaring itself planar, so that 2D runs can be set up before the 2D materials exist.
-class PlaneStressTestPMB : public ElasticBondBased {
+// A test-only plane-stress material, self-contained so that the test depends on no real model:
+// bond springs f = c s Y/|Y| V_j (pull form, both ends' halves), declaring itself planar.
+class PlaneStressTestSpring : public MaterialModel {
  public:
-  using ElasticBondBased::ElasticBondBased;
+  explicit PlaneStressTestSpring(ListReader& p)
+      : density_(p.positiveNumber("Density")), c_(p.positiveNumber("Spring Constant")) {}
+  double density() const override { return density_; }
+  double bulkModulus() const override { return c_; }
   PlaneMode planeMode() const override { return PlaneMode::PlaneStress; }
-  void initialize(const ModelState& state, const std::vector<int>& points) override {
+  std::string family() const override { return "test spring"; }
+  void initialize(const ModelState& state, const std::vector<int>&) override {
     seenDimension = state.dimension;  // what the run told the models
     seenThickness = state.thickness;
-    ElasticBondBased::initialize(state, points);
+  }
+  void computeForce(const ModelState& s, const std::vector<int>& points) override {
+    const Topology& t = *s.topology;
+    for (int i : points) {
+      double f[3] = {0, 0, 0};
+      for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
+        const int j = t.neighbors[b];
+        double X2 = 0, Y2 = 0, Y[3];
+        for (int d = 0; d < 3; ++d) {
+          const double X = s.x[3 * j + d] - s.x[3 * i + d];
+          Y[d] = s.y[3 * j + d] - s.y[3 * i + d];
+          X2 += X * X;
+          Y2 += Y[d] * Y[d];
+        }
+        const double stretch = (std::sqrt(Y2) - std::sqrt(X2)) / std::sqrt(X2);
+        for (int d = 0; d < 3; ++d) f[d] += c_ * stretch * Y[d] / std::sqrt(Y2) * s.volume[j];
+      }
+      for (int d = 0; d < 3; ++d) s.forceDensity[3 * i + d] = f[d];
+    }
+  }
+  void storedEnergyDensity(const ModelState&, const std::vector<int>& points,
+                           double* w) const override {
+    for (int i : points) w[i] = 0.0;
+  }
+  void stiffnessSum(const ModelState& s, const std::vector<int>& points,
+                    double* sum) const override {
+    const Topology& t = *s.topology;
+    for (int i : points) {
+      sum[i] = 0.0;
+      for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+        sum[i] += c_ / s.bondLength[b] * s.volume[t.neighbors[b]];
+    }
   }
   static inline int seenDimension = 0;
   static inline double seenThickness = 0.0;
+
+ private:
+  double density_, c_;
 };
 
-PERIDOT_REGISTER_MATERIAL("Test Plane Stress PMB", PlaneStressTestPMB,
-                          "test only: Elastic Bond Based declaring plane stress",
+PERIDOT_REGISTER_MATERIAL("Test Plane Stress Spring", PlaneStressTestSpring,
+                          "test only: bond springs declaring plane stress",
                           (std::vector<ParameterDoc>{{"Density", "positive number"},
-                                                     {"Bulk Modulus", "positive number"}}))
+                                                     {"Spring Constant", "positive number"}}))
 
 namespace {
 
@@ -172,8 +210,9 @@ std::string plateDeck(const std::string& outputFile, const std::string& material
          "      Number Points X: 12\n      Number Points Y: 8\n" +
          std::string(
              planar ? "" : "      Z Origin: 0.0\n      Z Length: 1.0\n      Number Points Z: 1\n") +
-         "  Materials:\n    M:\n      Material Model: " + material +
-         "\n      Density: 1.0\n      Bulk Modulus: 1.0\n"
+         "  Materials:\n    M:\n      Material Model: " + material + "\n      Density: 1.0\n" +
+         (material == "Elastic Bond Based" ? "      Bulk Modulus: 1.0\n"
+                                           : "      Spring Constant: 0.01\n") +
          "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 3.1\n"
          "  Boundary Conditions:\n    Left Node Set: \"1 13 25 37 49 61 73 85\"\n"
          "    Stretch:\n      Type: Initial Velocity\n      Node Set: All Node Set\n"
@@ -215,10 +254,10 @@ TEST(Planar, RunIsIdenticalToTheSerialRunAndWritesA2DFile) {
        ("peridot_planar_" + std::to_string(pid) + "_np" + std::to_string(size)))
           .string();
   {
-    auto sim = makeSimulation(plateDeck(base + "_all", "Test Plane Stress PMB"), MPI_COMM_WORLD);
+    auto sim = makeSimulation(plateDeck(base + "_all", "Test Plane Stress Spring"), MPI_COMM_WORLD);
     EXPECT_LE(sim->timeStep(), sim->stableTimeStepEstimate());
-    EXPECT_EQ(PlaneStressTestPMB::seenDimension, 2);
-    EXPECT_EQ(PlaneStressTestPMB::seenThickness, 0.1);
+    EXPECT_EQ(PlaneStressTestSpring::seenDimension, 2);
+    EXPECT_EQ(PlaneStressTestSpring::seenThickness, 0.1);
     sim->run();
     // Nothing moved out of the plane.
     std::vector<double> u;
@@ -236,7 +275,7 @@ TEST(Planar, RunIsIdenticalToTheSerialRunAndWritesA2DFile) {
   if (rank == 0) {
     {
       auto serial =
-          makeSimulation(plateDeck(base + "_one", "Test Plane Stress PMB"), MPI_COMM_SELF);
+          makeSimulation(plateDeck(base + "_one", "Test Plane Stress Spring"), MPI_COMM_SELF);
       serial->run();
     }
     const ExodusResults all = readExodusResults(base + "_all.e");
@@ -282,7 +321,7 @@ TEST(Planar, MaterialsMustMatchTheDimension) {
     EXPECT_NE(m.find("Plane Stress"), std::string::npos) << m;
   }
   try {
-    makeSimulation(plateDeck(file, "Test Plane Stress PMB", "TensorProduct3DMeshGenerator"),
+    makeSimulation(plateDeck(file, "Test Plane Stress Spring", "TensorProduct3DMeshGenerator"),
                    MPI_COMM_WORLD);
     ADD_FAILURE() << "a plane-stress material on a 3D discretization was accepted";
   } catch (const InputError& e) {
@@ -294,7 +333,7 @@ TEST(Planar, MaterialsMustMatchTheDimension) {
 TEST(Planar, TractionSurfaceAreaIsEdgeLengthTimesThickness) {
   std::string top;
   for (int id = 85; id <= 96; ++id) top += std::to_string(id) + (id < 96 ? " " : "");
-  std::string deck = plateDeck("unused", "Test Plane Stress PMB");
+  std::string deck = plateDeck("unused", "Test Plane Stress Spring");
   // Replace the conditions by a traction on the top edge (length 12, thickness 0.1).
   const auto begin = deck.find("    Stretch:");
   const auto end = deck.find("  Compute Class Parameters:");
