@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -25,21 +26,16 @@ CriticalStretch::CriticalStretch(ListReader& p) : path_(p.path()) {
 void CriticalStretch::bind(const MaterialModel& material, double horizon,
                            const std::string& blockName, std::ostream& log) {
   if (fractureEnergy_ <= 0) return;
-  if (material.family() != "bond-based") {
-    throw InputError(path_ + " -> Fracture Energy",
-                     "the critical stretch can be derived from the fracture energy for the 3D "
-                     "\"Elastic Bond Based\" material only so far (block " +
-                         blockName + " uses a " + material.family() +
-                         " material); give Critical Stretch");
-  }
   if (!(horizon > 0)) {
     throw InputError(path_ + " -> Fracture Energy",
                      "needs a constant horizon in block " + blockName);
   }
-  // Silling and Askari (2005), 3D PMB: G0 = pi c s_c^2 delta^5 / 10 with c = 18 K / (pi delta^4).
-  criticalStretch_ = std::sqrt(5.0 * fractureEnergy_ / (9.0 * material.bulkModulus() * horizon));
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
   log << "Critical stretch of block " << blockName << " from the fracture energy "
-      << fractureEnergy_ << ": " << criticalStretch_ << " (3D PMB, sqrt(5 G0 / (9 K delta)))\n";
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
 }
 
 void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>& points,
@@ -66,8 +62,9 @@ PERIDOT_REGISTER_DAMAGE("Critical Stretch", CriticalStretch,
                         (std::vector<ParameterDoc>{
                             {"Critical Stretch", "positive number: s_c (or give Fracture Energy)"},
                             {"Fracture Energy",
-                             "positive number: G0, from which s_c is derived "
-                             "per block (3D PMB: sqrt(5 G0 / (9 K delta)))"},
+                             "positive number: G0, from which s_c is derived per block from its "
+                             "material, dimension and influence function (3D PMB: "
+                             "sqrt(5 G0 / (9 K delta)); see doc/theory/fracture-energy.md)"},
                             {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
                             {"Verbose", "bool, default false"}}))
 

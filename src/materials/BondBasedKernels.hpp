@@ -1,11 +1,14 @@
 #pragma once
 // The pairwise bond loops shared by the bond-based models (PMB and normalized PMB). Each is
 // instantiated for the scene's options, so that the loop body has no branch on them.
-//   force density on i:  sum_j (c2 / 2) s V_j e_ij    [PMB]
-//                        sum_j (c2 / 2) s / |xi| V_j e_ij    [normalized PMB: kOverLength]
-//   energy density of i: sum_j (c2 / 8) s^2 |xi| V_j  [PMB] or without |xi|  [normalized]
+//   force density on i:  sum_j (c2 / 2) omega F(s) V_j e_ij           [PMB]
+//                        sum_j (c2 / 2) omega F(s) / |xi| V_j e_ij    [normalized PMB: kOverLength]
+//   energy density of i: sum_j (c2 / 4) omega p(s) |xi| V_j           [PMB] or without |xi|
 // with c2 = c_i + c_j (each end's half of the pair constant; with kSides only the ends whose
-// horizon holds the bond), s the bond stretch, times (1 - bond damage) with kDamage.
+// horizon holds the bond), s the bond stretch, times (1 - bond damage) with kDamage, omega the
+// bond influence with kInfluence (else 1), and the block's bond law: F(s) = s, p(s) = s^2/2
+// (Linear) or DTT's smooth F and p (kSmooth). The Linear loop is the one Peridot always had,
+// operation for operation.
 #include <cmath>
 #include <vector>
 
@@ -13,7 +16,7 @@
 
 namespace peridot {
 
-template <bool kDamage, bool kSides, bool kOverLength>
+template <bool kDamage, bool kSides, bool kOverLength, bool kInfluence, bool kSmooth>
 void pairForceLoop(const ModelState& s, const std::vector<int>& points, const double* c) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
@@ -22,6 +25,8 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
   const double* zeta = s.bondLength;
   const float* damage = s.bondDamage;
   const unsigned char* sides = s.bondSides;
+  const double* influence = s.influence;
+  const BondLaw law = s.bondLaw;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double ci = c[i], yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
@@ -31,10 +36,19 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       double c2 = kSides ? ci * (sides[b] & 1) + c[j] * ((sides[b] >> 1) & 1) : ci + c[j];
       if (kDamage) c2 *= 1.0 - damage[b];
-      // (c2 / 2) s V_j / |Y| in one division; coincident ends have no direction and, by
-      // symmetry, no force.
-      const double denominator = kOverLength ? 2.0 * zeta[b] * zeta[b] * dY : 2.0 * zeta[b] * dY;
-      const double scale = dY > 0 ? c2 * (dY - zeta[b]) * volume[j] / denominator : 0.0;
+      if (kInfluence) c2 *= influence[b];
+      double scale;
+      if constexpr (kSmooth) {
+        // (c2 / 2) F(s) V_j / |Y| (normalized: also / |xi|).
+        const double F = law.forceScalar((dY - zeta[b]) / zeta[b]);
+        const double denominator = kOverLength ? 2.0 * zeta[b] * dY : 2.0 * dY;
+        scale = dY > 0 ? c2 * F * volume[j] / denominator : 0.0;
+      } else {
+        // (c2 / 2) s V_j / |Y| in one division; coincident ends have no direction and, by
+        // symmetry, no force.
+        const double denominator = kOverLength ? 2.0 * zeta[b] * zeta[b] * dY : 2.0 * zeta[b] * dY;
+        scale = dY > 0 ? c2 * (dY - zeta[b]) * volume[j] / denominator : 0.0;
+      }
       f0 += scale * Y0;
       f1 += scale * Y1;
       f2 += scale * Y2;
@@ -45,20 +59,37 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
   }
 }
 
+template <bool kOverLength, bool kDamage, bool kSides, bool kInfluence>
+void pairForceWithLaw(const ModelState& s, const std::vector<int>& points, const double* c) {
+  if (s.bondLaw.kind == BondLaw::Kind::Smooth)
+    pairForceLoop<kDamage, kSides, kOverLength, kInfluence, true>(s, points, c);
+  else
+    pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false>(s, points, c);
+}
+
+template <bool kOverLength, bool kDamage, bool kSides>
+void pairForceWithInfluence(const ModelState& s, const std::vector<int>& points, const double* c) {
+  if (s.influence)
+    pairForceWithLaw<kOverLength, kDamage, kSides, true>(s, points, c);
+  else
+    pairForceWithLaw<kOverLength, kDamage, kSides, false>(s, points, c);
+}
+
 template <bool kOverLength>
 void pairForce(const ModelState& s, const std::vector<int>& points, const double* c) {
   if (s.bondDamage) {
-    s.bondSides ? pairForceLoop<true, true, kOverLength>(s, points, c)
-                : pairForceLoop<true, false, kOverLength>(s, points, c);
+    s.bondSides ? pairForceWithInfluence<kOverLength, true, true>(s, points, c)
+                : pairForceWithInfluence<kOverLength, true, false>(s, points, c);
   } else {
-    s.bondSides ? pairForceLoop<false, true, kOverLength>(s, points, c)
-                : pairForceLoop<false, false, kOverLength>(s, points, c);
+    s.bondSides ? pairForceWithInfluence<kOverLength, false, true>(s, points, c)
+                : pairForceWithInfluence<kOverLength, false, false>(s, points, c);
   }
 }
 
 template <bool kOverLength>
 void pairEnergyDensity(const ModelState& s, const std::vector<int>& points, const double* c,
                        double* energyDensity) {
+  const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
   for (int i : points) {
     double w = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
@@ -70,7 +101,10 @@ void pairEnergyDensity(const ModelState& s, const std::vector<int>& points, cons
       const double stretch = (std::sqrt(Y2) - zeta) / zeta;
       double c2 = c[i] + c[j];
       if (s.bondSides) c2 = c[i] * (s.bondSides[b] & 1) + c[j] * ((s.bondSides[b] >> 1) & 1);
-      double wb = 0.125 * c2 * stretch * stretch * (kOverLength ? 1.0 : zeta);
+      // 1/4 c2 p(s), p = s^2/2 for the linear law (kept as 1/8 c2 s^2, the same bits as before).
+      double wb = smooth ? 0.25 * c2 * s.bondLaw.potential(stretch) * (kOverLength ? 1.0 : zeta)
+                         : 0.125 * c2 * stretch * stretch * (kOverLength ? 1.0 : zeta);
+      if (s.influence) wb *= s.influence[b];
       if (s.bondDamage) wb *= 1.0 - s.bondDamage[b];
       w += wb * s.volume[j];
     }

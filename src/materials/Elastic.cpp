@@ -27,8 +27,22 @@ inline Bond bondGeometry(const double* x, const double* y, int i, int j) {
 
 Elastic::Elastic(ListReader& p) {
   density_ = p.positiveNumber("Density");
+  mode_ = readPlaneMode(p);
   constants_ = readTwoElasticConstants(p);
   shearCorrection_ = p.boolean("Apply Shear Correction Factor", false);
+  if (mode_ != PlaneMode::ThreeD) {
+    // The dilatation is the 3D volumetric strain (Le, Chan and Schwartz 2014): in plane stress
+    // eps_zz = -nu/(1-nu) tr eps_2D, so theta = r tr eps_2D with r = (1-2nu)/(1-nu); in plane
+    // strain r = 1. The in-plane energy 1/2 kappa (tr eps_2D)^2 becomes 1/2 (kappa/r^2) theta^2.
+    const double nu = constants_.poissonsRatio;
+    const double r = mode_ == PlaneMode::PlaneStress ? (1.0 - 2.0 * nu) / (1.0 - nu) : 1.0;
+    thetaFactor_ = 2.0 * r;
+    const double kappa = inPlaneBulkModulus(constants_.youngsModulus, nu, mode_);
+    dilatationModulus_ = kappa / (r * r);
+    deviatoricFactor_ = 8.0;
+  } else {
+    dilatationModulus_ = constants_.bulkModulus;
+  }
   acceptCommonMaterialKeys(p, true);
 }
 
@@ -37,12 +51,15 @@ namespace {
 // Peridigm's shear correction: the ratio between the continuum and the discrete deviatoric
 // energy of pure shear u = gamma (y, x, 0) (and the zx, yz modes; the largest discrete energy
 // is used), so that alpha = 15 G / m reproduces the shear energy on the actual neighbourhood.
-double shearCorrectionFactor(const ModelState& s, int i, double m) {
+// In 2D (thetaFactor 2r, deviatoricFactor 8) the one in-plane mode, with the 2D dilatation.
+double shearCorrectionFactor(const ModelState& s, int i, double m, double thetaFactor,
+                             double deviatoricFactor) {
   const double gamma = 1.0e-6;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
+  const int modes = s.dimension == 2 ? 1 : 3;
   double largest = 0;
-  for (int mode = 0; mode < 3; ++mode) {
+  for (int mode = 0; mode < modes; ++mode) {
     const int a = mode, b = (mode + 1) % 3;  // shear in the (a, b) plane
     auto deformedLength = [&](std::int64_t bond, double& zeta) {
       const int j = neighbors[bond];
@@ -59,19 +76,19 @@ double shearCorrectionFactor(const ModelState& s, int i, double m) {
       double zeta = 0;
       const double dY = deformedLength(bond, zeta);
       const double omega = s.influence ? s.influence[bond] : 1.0;
-      theta += 3.0 * omega * zeta * (dY - zeta) * s.volume[neighbors[bond]] / m;
+      theta += thetaFactor * omega * zeta * (dY - zeta) * s.volume[neighbors[bond]] / m;
     }
     double norm = 0;
     for (std::int64_t bond = offsets[i]; bond < offsets[i + 1]; ++bond) {
       double zeta = 0;
       const double dY = deformedLength(bond, zeta);
-      const double ed = dY - zeta - theta * zeta / 3;
+      const double ed = dY - zeta - theta * zeta / thetaFactor;
       const double omega = s.influence ? s.influence[bond] : 1.0;
       norm += ed * omega * ed * s.volume[neighbors[bond]];
     }
     largest = std::max(largest, norm);
   }
-  return largest > 0 ? 4.0 * gamma * gamma * m / largest / 15.0 : 1.0;
+  return largest > 0 ? 4.0 * gamma * gamma * m / largest / deviatoricFactor : 1.0;
 }
 
 }  // namespace
@@ -85,6 +102,8 @@ void Elastic::declareFields(FieldManager& fields) {
 }
 
 void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
+  checkDimension(s, "Elastic");
+  checkAssumedInfluenceFunction(s);
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   for (int i : points) {
@@ -100,11 +119,13 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
       if (s.topology->ownSide(b)) m += omega * zetaSquared * s.volume[j];
     }
     weightedVolume_[i] = m;
-    bulk_[i] = constants_.bulkModulus;
+    bulk_[i] = dilatationModulus_;
     // A point without bonds has no weighted volume and exerts no force.
-    alpha_[i] = m > 0 ? 15.0 * constants_.shearModulus / m : 0.0;
-    if (shearCorrection_ && m > 0) alpha_[i] *= shearCorrectionFactor(s, i, m);
-    beta_[i] = m > 0 ? 3.0 * constants_.bulkModulus / m - alpha_[i] / 3.0 : 0.0;
+    alpha_[i] = m > 0 ? deviatoricFactor_ * constants_.shearModulus / m : 0.0;
+    if (shearCorrection_ && m > 0)
+      alpha_[i] *= shearCorrectionFactor(s, i, m, thetaFactor_, deviatoricFactor_);
+    // beta = B c / m - alpha / c (3D: 3 K / m - alpha / 3).
+    beta_[i] = m > 0 ? thetaFactor_ * dilatationModulus_ / m - alpha_[i] / thetaFactor_ : 0.0;
   }
 }
 
@@ -125,7 +146,7 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
       if (s.topology->ownSide(b))
-        theta += 3.0 * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
+        theta += thetaFactor_ * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
     }
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
@@ -133,6 +154,17 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
 }
 
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
+  if (s.bondLaw.kind == BondLaw::Kind::Smooth)
+    forceLoop<true>(s, points);
+  else
+    forceLoop<false>(s, points);
+}
+
+// kSmooth: LPS-T (paper 001 eq. 15), t = (1 - d) omega zeta (beta theta + alpha F(s)), with the
+// dilatation of the surviving bond parts (precompute). Otherwise Peridigm's LPS, as it was.
+template <bool kSmooth>
+void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) const {
+  const BondLaw law = s.bondLaw;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* theta = dilatation_;
@@ -158,8 +190,15 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
       // Force state of i on the bond and of j on the reversed bond (pull form: each point sums
       // only its own list, in global-id order, whatever the rank count), each term as Peridigm
       // forms it so that two-point cases reproduce its gold results to the last bits.
-      double ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
-      double tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      double ti, tj;
+      if constexpr (kSmooth) {
+        const double F = law.forceScalar(e / zeta[b]);
+        ti = intact * omega * zeta[b] * (thetaBetaI + alphaI * F);
+        tj = intact * omega * zeta[b] * (theta[j] * beta[j] + alpha[j] * F);
+      } else {
+        ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
+        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+      }
       if (s.bondSides) {  // an end whose horizon does not hold the bond exerts no force state
         ti *= s.bondSides[b] & 1;
         tj *= (s.bondSides[b] >> 1) & 1;
@@ -182,6 +221,10 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
                                   double* energyDensity) const {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
+  if (s.bondLaw.kind == BondLaw::Kind::Smooth) {
+    smoothEnergyDensity(s, points, energyDensity);
+    return;
+  }
   for (int i : points) {
     const double mi = weightedVolume_[i];
     double deviatoric = 0;
@@ -189,7 +232,7 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
       const int j = neighbors[b];
       const Bond g = bondGeometry(s.x, s.y, i, j);
       if (!s.topology->ownSide(b)) continue;
-      const double ed = g.dY - g.zeta - dilatation_[i] * g.zeta / 3.0;
+      const double ed = g.dY - g.zeta - dilatation_[i] * g.zeta / thetaFactor_;
       double w = ed * ed * s.volume[j];
       if (s.influence) w *= s.influence[b];
       if (s.bondDamage) w *= 1.0 - s.bondDamage[b];
@@ -197,6 +240,35 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
     }
     energyDensity[i] = 0.5 * bulk_[i] * dilatation_[i] * dilatation_[i] +
                        (mi > 0 ? 0.5 * alpha_[i] * deviatoric : 0.0);
+  }
+}
+
+// LPS-T energy: W = 1/2 (beta m / c) theta^2 + alpha sum_j omega (1 - d) zeta^2 p(s) V_j, whose
+// derivative with respect to the extension of a bond (d held fixed) is the LPS-T force state
+// (1 - d) omega zeta (beta theta + alpha F(s)) (theta = c/m sum omega (1-d) zeta e V). Undamaged
+// and with p = s^2/2 it is the LPS energy above.
+void Elastic::smoothEnergyDensity(const ModelState& s, const std::vector<int>& points,
+                                  double* energyDensity) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  for (int i : points) {
+    const double mi = weightedVolume_[i];
+    if (!(mi > 0)) {
+      energyDensity[i] = 0.0;
+      continue;
+    }
+    double bonds = 0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const int j = neighbors[b];
+      const Bond g = bondGeometry(s.x, s.y, i, j);
+      double w = g.zeta * g.zeta * s.bondLaw.potential((g.dY - g.zeta) / g.zeta) * s.volume[j];
+      if (s.influence) w *= s.influence[b];
+      if (s.bondDamage) w *= 1.0 - s.bondDamage[b];
+      bonds += w;
+    }
+    energyDensity[i] =
+        0.5 * beta_[i] * mi / thetaFactor_ * dilatation_[i] * dilatation_[i] + alpha_[i] * bonds;
   }
 }
 
@@ -209,9 +281,16 @@ PERIDOT_REGISTER_MATERIAL(
         {"Shear Modulus", "positive number: G"},
         {"Young's Modulus", "positive number: E"},
         {"Poisson's Ratio", "number in (-1, 0.5): nu"},
+        {"Plane Stress",
+         "bool, default false: 2D LPS in plane stress (Le et al. 2014): theta = 2(1-2nu)/(1-nu) "
+         "/ m sum omega zeta e V, alpha = 8 G / m; needs a planar discretization"},
+        {"Plane Strain",
+         "bool, default false: 2D LPS in plane strain: theta = 2 / m sum omega zeta e V, "
+         "alpha = 8 G / m"},
         {"Apply Shear Correction Factor",
          "bool, default false: scale the deviatoric modulus of each point so that pure shear of "
-         "its discrete neighbourhood stores the continuum energy (Peridigm's option)"},
+         "its discrete neighbourhood stores the continuum energy (Peridigm's option; in 2D the "
+         "one in-plane shear mode)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
         {"Compute Partial Stress", "bool, default false: true is not supported yet"},

@@ -1,7 +1,10 @@
 #pragma once
 // Linear peridynamic solid (LPS, ordinary state-based), Peridigm's "Elastic": weighted volume
 // m, dilatation theta and deviatoric extension e^d; scalar force state
-//   t = (1 - d) omega (3 K theta / m |xi| + 15 G / m e^d).
+//   t = (1 - d) omega (3 K theta / m |xi| + 15 G / m e^d)          (3D)
+// and its plane stress / plane strain forms (Le, Chan and Schwartz 2014): theta = c/m sum omega
+// zeta e V with c = 2(1-2nu)/(1-nu) or 2, alpha = 8 G / m. With a smooth bond law, LPS-T (paper
+// 001 eq. 15): t = (1 - d) omega zeta (beta theta + alpha F(s)), beta = B c / m - alpha / c.
 #include "materials/MaterialModel.hpp"
 
 namespace peridot {
@@ -11,6 +14,10 @@ class Elastic : public MaterialModel {
   explicit Elastic(ListReader& params);
   double density() const override { return density_; }
   double bulkModulus() const override { return constants_.bulkModulus; }
+  double youngsModulus() const override { return constants_.youngsModulus; }
+  double poissonsRatio() const override { return constants_.poissonsRatio; }
+  PlaneMode planeMode() const override { return mode_; }
+  bool acceptsSmoothBondLaw() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override {
@@ -33,12 +40,20 @@ class Elastic : public MaterialModel {
   static constexpr const char* kBeta = "LPS_Beta";
 
  private:
+  template <bool kSmooth>
+  void forceLoop(const ModelState& state, const std::vector<int>& points) const;
+  void smoothEnergyDensity(const ModelState& state, const std::vector<int>& points,
+                           double* energyDensity) const;
+  PlaneMode mode_ = PlaneMode::ThreeD;
+  // theta = thetaFactor / m sum omega zeta e V (3 in 3D, 2 r in 2D); the dilatation energy
+  // 1/2 dilatationModulus theta^2 (K in 3D, kappa / r^2 in 2D); alpha = deviatoricFactor G / m.
+  double thetaFactor_ = 3.0, dilatationModulus_ = 0.0, deviatoricFactor_ = 15.0;
   double density_ = 0;
   ElasticConstants constants_;
   bool shearCorrection_ = false;
   double* weightedVolume_ = nullptr;
   double* dilatation_ = nullptr;
-  double* bulk_ = nullptr;  // per point, so bonds across blocks see each end's constants
+  double* bulk_ = nullptr;  // per point (the dilatation modulus), each end's constants
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
 };

@@ -13,13 +13,9 @@ const double kPi = 3.14159265358979323846;
 
 ElasticBondBased::ElasticBondBased(ListReader& p) {
   density_ = p.positiveNumber("Density");
-  bulkModulus_ = readBondBasedBulkModulus(p);
-  for (const char* k : {"Plane Strain", "Plane Stress"}) {
-    if (p.has(k) && p.boolean(k, false)) {
-      throw InputError(p.pathOf(k), "2D bond-based models are not supported by Peridot yet");
-    }
-  }
-  if (p.has("Height")) p.positiveNumber("Height");
+  mode_ = readPlaneMode(p);
+  bulkModulus_ = readBondBasedBulkModulus(p, mode_);
+  if (p.has("Height")) height_ = p.positiveNumber("Height");
   acceptCommonMaterialKeys(p);
 }
 
@@ -28,9 +24,30 @@ void ElasticBondBased::declareFields(FieldManager& fields) {
 }
 
 void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& points) {
+  checkDimension(s, "Elastic Bond Based");
+  checkAssumedInfluenceFunction(s);
+  if (s.dimension == 2 && height_ > 0 && std::fabs(height_ - s.thickness) > 1e-12 * s.thickness) {
+    throw InputError("Materials -> Height",
+                     "differs from the discretization's thickness " + std::to_string(s.thickness));
+  }
+  const bool one = s.influenceFunction == "One";
+  const double kappa = inPlaneBulkModulus(youngsModulus(), poissonsRatio(), mode_);
   for (int i : points) {
     const double d = s.horizon[i];
-    micromodulus_[i] = 18.0 * bulkModulus_ / (kPi * d * d * d * d);
+    if (s.dimension == 3 && one) {
+      micromodulus_[i] = 18.0 * bulkModulus_ / (kPi * d * d * d * d);
+      continue;
+    }
+    // W = 1/4 c s^2 integral omega zeta dV must be the continuum dilatation energy:
+    // 3D 9 K s^2 / 2 = pi c s^2 J3; 2D 2 kappa s^2 = pi c s^2 t J2 / 2.
+    double Jk = 0;
+    if (!influenceIntegral(s.influenceFunction, s.dimension == 3 ? 3 : 2, d, Jk)) {
+      throw InputError(
+          "Discretization -> Influence Function",
+          "\"Elastic Bond Based\" has no micromodulus for \"" + s.influenceFunction + "\"");
+    }
+    micromodulus_[i] = s.dimension == 3 ? 9.0 * bulkModulus_ / (2.0 * kPi * Jk)
+                                        : 4.0 * kappa / (kPi * s.thickness * Jk);
   }
 }
 
@@ -43,16 +60,46 @@ void ElasticBondBased::storedEnergyDensity(const ModelState& s, const std::vecto
   pairEnergyDensity<false>(s, points, micromodulus_, energyDensity);
 }
 
+void ElasticBondBased::stiffnessSum(const ModelState& s, const std::vector<int>& points,
+                                    double* sum) const {
+  // 3D with omega = 1: Peridigm's estimate (the same constant, the same bits).
+  if (s.dimension == 3 && !s.influence) {
+    MaterialModel::stiffnessSum(s, points, sum);
+    return;
+  }
+  // Force c_ij omega s V_j = c_ij omega (relative displacement) V_j / |xi|.
+  for (int i : points) {
+    double total = 0;
+    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const int j = s.topology->neighbors[b];
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      total += 0.5 * (micromodulus_[i] + micromodulus_[j]) * omega * s.volume[j] / s.bondLength[b];
+    }
+    sum[i] = total;
+  }
+}
+
 PERIDOT_REGISTER_MATERIAL(
     "Elastic Bond Based", ElasticBondBased,
-    "Prototype micro-elastic brittle (PMB) bond-based model; micromodulus 18K/(pi delta^4)",
+    "Prototype micro-elastic brittle (PMB) bond-based model; micromodulus from the dilatation "
+    "energy (3D, omega = 1: 18K/(pi delta^4)); 3D, plane stress or plane strain",
     (std::vector<ParameterDoc>{
         {"Density", "positive number, required: mass density"},
-        {"Bulk Modulus", "positive number: bulk modulus K (give this or Young's Modulus)"},
-        {"Young's Modulus", "positive number: E; K = 2E/3 since Poisson's ratio is 1/4"},
-        {"Plane Strain", "bool, default false: true is not supported yet"},
-        {"Plane Stress", "bool, default false: true is not supported yet"},
-        {"Height", "positive number: thickness of 2D models (accepted, unused in 3D)"},
+        {"Bulk Modulus",
+         "positive number: the (3D) bulk modulus K (give this or Young's Modulus); E = 3K(1-2nu) "
+         "with the fixed nu"},
+        {"Young's Modulus",
+         "positive number: E; Poisson's ratio is fixed: 1/4 in 3D and plane strain (K = 2E/3), "
+         "1/3 in plane stress (K = E)"},
+        {"Plane Stress",
+         "bool, default false: 2D plane stress (nu = 1/3), c = 4 kappa/(pi t J2), kappa = "
+         "E/(2(1-nu)); needs a planar discretization"},
+        {"Plane Strain",
+         "bool, default false: 2D plane strain (nu = 1/4), kappa = E/(2(1+nu)(1-2nu))"},
+        {"Height",
+         "positive number: thickness of a 2D model; if given it must equal the discretization's "
+         "thickness (Peridigm compatibility)"},
         {"Finite Difference Probe Length",
          "positive number: accepted for Peridigm decks, unused"}}))
 

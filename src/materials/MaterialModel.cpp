@@ -31,28 +31,102 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
   return material;
 }
 
-double readBondBasedBulkModulus(ListReader& p) {
+double bondBasedPoissonsRatio(PlaneMode mode) {
+  return mode == PlaneMode::PlaneStress ? 1.0 / 3.0 : 0.25;
+}
+
+PlaneMode readPlaneMode(ListReader& p) {
+  const bool stress = p.has("Plane Stress") && p.boolean("Plane Stress", false);
+  const bool strain = p.has("Plane Strain") && p.boolean("Plane Strain", false);
+  if (stress && strain)
+    throw InputError(p.path(), "\"Plane Stress\" and \"Plane Strain\" are exclusive");
+  return stress ? PlaneMode::PlaneStress : strain ? PlaneMode::PlaneStrain : PlaneMode::ThreeD;
+}
+
+double inPlaneBulkModulus(double E, double nu, PlaneMode mode) {
+  switch (mode) {
+    case PlaneMode::PlaneStress:
+      return E / (2.0 * (1.0 - nu));
+    case PlaneMode::PlaneStrain:
+      return E / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu));
+    default:
+      return E / (3.0 * (1.0 - 2.0 * nu));
+  }
+}
+
+bool influenceIntegral(const std::string& w, int k, double delta, double& value) {
+  const double dk = std::pow(delta, k);
+  if (w == "One") {
+    value = dk * delta / (k + 1);
+  } else if (w == "Conical") {
+    value = dk * delta / ((k + 1) * (k + 2));
+  } else if (w == "Conical Over Zeta" && k >= 1) {
+    value = dk / (k * (k + 1));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+double readBondBasedBulkModulus(ListReader& p, PlaneMode mode) {
+  const double nu = bondBasedPoissonsRatio(mode);
+  const std::string fixed = mode == PlaneMode::PlaneStress   ? "1/3 in plane stress"
+                            : mode == PlaneMode::PlaneStrain ? "1/4 in plane strain"
+                                                             : "1/4";
   for (const char* k : {"Shear Modulus", "Poisson's Ratio"}) {
     if (p.has(k)) {
       throw InputError(p.pathOf(k),
                        "a bond-based material has one elastic constant (Poisson's "
-                       "ratio is fixed at 1/4); give only Bulk Modulus or Young's Modulus");
+                       "ratio is fixed at " +
+                           fixed + "); give only Bulk Modulus or Young's Modulus");
     }
   }
   if (p.has("Bulk Modulus") == p.has("Young's Modulus")) {
     throw InputError(p.path(), "give exactly one of \"Bulk Modulus\" and \"Young's Modulus\"");
   }
-  // nu = 1/4 in 3D: K = E / (3 (1 - 2 nu)) = 2E/3.
-  return p.has("Bulk Modulus") ? p.positiveNumber("Bulk Modulus")
-                               : p.positiveNumber("Young's Modulus") * 2.0 / 3.0;
+  if (p.has("Bulk Modulus")) return p.positiveNumber("Bulk Modulus");
+  const double E = p.positiveNumber("Young's Modulus");
+  // K = E / (3 (1 - 2 nu)); for nu = 1/4 written as before (2E/3) so that 3D keeps its bits.
+  return mode == PlaneMode::PlaneStress ? E / (3.0 * (1.0 - 2.0 * nu)) : E * 2.0 / 3.0;
+}
+
+void MaterialModel::checkAssumedInfluenceFunction(const ModelState& s) const {
+  if (influenceFunctionAssumed_ && influenceFunction_ != s.influenceFunction) {
+    throw InputError("Discretization -> Influence Function",
+                     "the critical stretch was derived from the fracture energy for the "
+                     "influence function \"" +
+                         influenceFunction_ + "\" but the run uses \"" + s.influenceFunction +
+                         "\" (the set-up did not pass it to the material before binding the "
+                         "damage model); give Critical Stretch instead");
+  }
+}
+
+void MaterialModel::checkDimension(const ModelState& s, const std::string& modelName) const {
+  const bool planar = planeMode() != PlaneMode::ThreeD;
+  if (planar && s.dimension != 2) {
+    throw InputError("Materials", "the \"" + modelName +
+                                      "\" material is plane stress or plane strain but the "
+                                      "discretization is 3-dimensional");
+  }
+  if (!planar && s.dimension != 3) {
+    throw InputError("Materials", "the \"" + modelName +
+                                      "\" material is 3-dimensional but the discretization is "
+                                      "planar: set \"Plane Stress\" or \"Plane Strain\"");
+  }
 }
 
 void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& points,
                                  double* sum) const {
   const double pi = 3.14159265358979323846;
+  // 2D: the bond-based plane constant 12 kappa / (pi t delta^3) of omega = 1 (W = 2 kappa s^2
+  // for an in-plane dilatation), kappa the in-plane bulk modulus of the material.
+  const bool planar = s.dimension == 2;
+  const double kappa =
+      planar ? inPlaneBulkModulus(youngsModulus(), poissonsRatio(), planeMode()) : 0.0;
   for (int i : points) {
     const double d = s.horizon[i];
-    const double c = 18.0 * bulkModulus() / (pi * d * d * d * d);
+    const double c = planar ? 12.0 * kappa / (pi * s.thickness * d * d * d)
+                            : 18.0 * bulkModulus() / (pi * d * d * d * d);
     double total = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
       if (s.topology->ownSide(b)) total += s.volume[s.topology->neighbors[b]] * c / s.bondLength[b];

@@ -77,6 +77,31 @@ class MaterialModel {
   virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }
   // Whether the model applies a Smooth BondLaw (DTT); damage models that need one check this.
   virtual bool acceptsSmoothBondLaw() const { return false; }
+  // Young's modulus and Poisson's ratio of the material as the deck defines it (for a bond-based
+  // material, nu is the fixed value of its plane mode); 0 where a model does not define them.
+  virtual double youngsModulus() const { return 0.0; }
+  virtual double poissonsRatio() const { return 0.0; }
+
+  // The influence function of the run, for derivations made before the model state exists
+  // (fracture energy -> critical stretch at bind time). Set by the set-up; "One" otherwise.
+  void setInfluenceFunction(const std::string& name) { influenceFunction_ = name; }
+  // Records that a derivation assumed this influence function; initialize() then checks that
+  // the run uses it (checkAssumedInfluenceFunction), so that a mismatch is an error, not a
+  // silently wrong critical stretch.
+  const std::string& influenceFunctionAssumed() const {
+    influenceFunctionAssumed_ = true;
+    return influenceFunction_;
+  }
+
+ protected:
+  // Throws InputError if a derivation assumed another influence function than the run's.
+  void checkAssumedInfluenceFunction(const ModelState& state) const;
+  // Throws InputError if the model's plane mode does not match the run's dimension.
+  void checkDimension(const ModelState& state, const std::string& modelName) const;
+
+ private:
+  std::string influenceFunction_ = "One";
+  mutable bool influenceFunctionAssumed_ = false;
 };
 
 using MaterialRegistry = Registry<MaterialModel>;
@@ -91,9 +116,27 @@ struct ElasticConstants {
 };
 ElasticConstants readTwoElasticConstants(ListReader& params);
 
-// The one elastic constant of a 3D bond-based material, as its bulk modulus (Bulk Modulus, or
-// Young's Modulus with Poisson's ratio 1/4); other constants are errors.
-double readBondBasedBulkModulus(ListReader& params);
+// The one elastic constant of a bond-based material, as its (3D) bulk modulus K: Bulk Modulus,
+// or Young's Modulus with the Poisson's ratio the model has in `mode` (1/4 in 3D and in plane
+// strain, 1/3 in plane stress), K = E / (3 (1 - 2 nu)); other constants are errors.
+double readBondBasedBulkModulus(ListReader& params, PlaneMode mode = PlaneMode::ThreeD);
+
+// The fixed Poisson's ratio of a bond-based material: 1/4 in 3D and plane strain, 1/3 in plane
+// stress (the Cauchy relation lambda = mu of the in-plane or 3D elastic tensor).
+double bondBasedPoissonsRatio(PlaneMode mode);
+
+// "Plane Stress: true" / "Plane Strain: true" (at most one), else ThreeD. Marks the keys read.
+PlaneMode readPlaneMode(ListReader& params);
+
+// The in-plane (areal) bulk modulus kappa = lambda_2D + mu of a 2D mode, such that a pure
+// in-plane dilatation eps = s I_2 stores W = 2 kappa s^2: E / (2 (1 - nu)) in plane stress,
+// E / (2 (1 + nu) (1 - 2 nu)) in plane strain; the 3D bulk modulus E / (3 (1 - 2 nu)) in 3D.
+double inPlaneBulkModulus(double youngsModulus, double poissonsRatio, PlaneMode mode);
+
+// J_k = integral_0^delta omega(zeta) zeta^k dzeta for the influence functions with a closed
+// form ("One", "Conical" = 1 - zeta/delta, "Conical Over Zeta" = (1 - zeta/delta)/zeta, k >= 1);
+// returns false for any other.
+bool influenceIntegral(const std::string& influenceFunction, int k, double delta, double& value);
 
 // Keys every material accepts and ignores or checks (Peridigm compatibility).
 void acceptCommonMaterialKeys(ListReader& params, bool hasShearCorrection = false);

@@ -1,9 +1,11 @@
 #pragma once
 // Normalized PMB (Ganzenmueller, Hiermaier and May; paper 000, eqs. 13-17): the micromodulus of
-// each point comes from the same Riemann sum that integrates the forces, c_i = 18 K / sum_j V_j
-// (3D), so that a homogeneous dilatation gives exactly W = 9 K s^2 / 2 at every point, surface
-// and mixed particle sizes or horizons included. Pair constant c_ij = (c_i + c_j) / 2; force
-// density on i: sum_j c_ij s_ij / |xi_ij| e_ij V_j; energy density W_i = 1/4 sum_j c_ij s_ij^2 V_j.
+// each point comes from the same Riemann sum that integrates the forces, c_i = 18 K / sum_j
+// omega V_j (3D) or 8 kappa / sum_j omega V_j (plane stress / strain, kappa the in-plane bulk
+// modulus), so that a homogeneous dilatation gives exactly W = 9 K s^2 / 2 (3D) or 2 kappa s^2
+// (2D) at every point, surface and mixed particle sizes or horizons included. Pair constant
+// c_ij = (c_i + c_j) / 2; force density on i: sum_j c_ij omega F(s_ij) / |xi_ij| e_ij V_j;
+// energy density W_i = 1/2 sum_j c_ij omega p(s_ij) V_j (F = s, p = s^2/2 for the linear law).
 #include "materials/MaterialModel.hpp"
 
 namespace peridot {
@@ -13,6 +15,14 @@ class NormalizedPMB : public MaterialModel {
   explicit NormalizedPMB(ListReader& params);
   double density() const override { return density_; }
   double bulkModulus() const override { return bulkModulus_; }
+  double youngsModulus() const override {
+    return 3.0 * bulkModulus_ * (1.0 - 2.0 * poissonsRatio());
+  }
+  double poissonsRatio() const override { return bondBasedPoissonsRatio(mode_); }
+  PlaneMode planeMode() const override { return mode_; }
+  // The normalization is a discrete sum: any influence function is consistent.
+  bool acceptsInfluenceFunction(const std::string&) const override { return true; }
+  bool acceptsSmoothBondLaw() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }
@@ -27,6 +37,7 @@ class NormalizedPMB : public MaterialModel {
 
  private:
   double density_ = 0, bulkModulus_ = 0;
+  PlaneMode mode_ = PlaneMode::ThreeD;
   double* micromodulus_ = nullptr;
 };
 

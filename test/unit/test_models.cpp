@@ -204,8 +204,11 @@ TEST(CriticalStretch, FromFractureEnergyFor3DPMB) {
   const double expected = std::sqrt(5.0 * 12.0 / (9.0 * K * delta));
   EXPECT_DOUBLE_EQ(static_cast<CriticalStretch&>(*damage).criticalStretch(), expected);
   EXPECT_NE(log.str().find("block_1"), std::string::npos);
-  // LPS has no formula here yet: a clear error, not a silent default.
-  EXPECT_THROW(damage->bind(*lps(1.0, 1.0), delta, "block_2", log), InputError);
+  // A model without a formula (a material whose influence function has no closed-form
+  // moments) is a clear error, not a silent default.
+  auto gaussianPmb = pmb(K);
+  gaussianPmb->setInfluenceFunction("Gaussian");
+  EXPECT_THROW(damage->bind(*gaussianPmb, delta, "block_2", log), InputError);
 }
 
 }  // namespace

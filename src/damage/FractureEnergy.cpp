@@ -1,0 +1,88 @@
+#include "damage/FractureEnergy.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+
+namespace peridot {
+
+namespace {
+const double kPi = 3.14159265358979323846;
+
+const char* modeName(PlaneMode mode) {
+  return mode == PlaneMode::PlaneStress   ? "plane stress"
+         : mode == PlaneMode::PlaneStrain ? "plane strain"
+                                          : "3D";
+}
+}  // namespace
+
+double criticalStretchFromFractureEnergy(const MaterialModel& material, double horizon, double G0,
+                                         const std::string& w, std::string& formulaUsed,
+                                         const std::string& path) {
+  const std::string family = material.family();
+  const PlaneMode mode = material.planeMode();
+  const bool planar = mode != PlaneMode::ThreeD;
+  const double delta = horizon;
+  if (!(delta > 0)) throw InputError(path, "needs a constant horizon");
+  // J_k = integral_0^delta omega zeta^k dzeta (closed forms in influenceIntegral).
+  auto J = [&](int k) {
+    double v = 0;
+    if (!influenceIntegral(w, k, delta, v)) {
+      throw InputError(path, "no fracture-energy formula for the influence function \"" + w +
+                                 "\" (One, Conical and Conical Over Zeta have one); give "
+                                 "Critical Stretch");
+    }
+    return v;
+  };
+  const std::string where = std::string(" (") + modeName(mode) + ", omega " + w + ")";
+  if (family == "bond-based") {
+    const double K = material.bulkModulus();
+    if (!planar) {
+      if (w == "One") {
+        // Silling and Askari (2005): G0 = pi c s_c^2 delta^5 / 10, c = 18 K / (pi delta^4).
+        formulaUsed = "3D PMB, sqrt(5 G0 / (9 K delta))";
+        return std::sqrt(5.0 * G0 / (9.0 * K * delta));
+      }
+      // c = 9 K / (2 pi J3), G0 = pi c s^2 J4 / 2.
+      formulaUsed = "PMB, sqrt(4 G0 J3 / (9 K J4))" + where;
+      return std::sqrt(4.0 * G0 * J(3) / (9.0 * K * J(4)));
+    }
+    // c = 4 kappa / (pi t J2), G0 = c s^2 t J3; conical plane stress: sqrt(5 pi G0 / (9 E delta))
+    // (paper 001 eq. 22), omega = 1 plane stress: sqrt(4 pi G0 / (9 E delta)).
+    const double kappa =
+        inPlaneBulkModulus(material.youngsModulus(), material.poissonsRatio(), mode);
+    formulaUsed = "PMB, sqrt(pi G0 J2 / (4 kappa J3)), kappa = " + std::to_string(kappa) + where;
+    return std::sqrt(kPi * G0 * J(2) / (4.0 * kappa * J(3)));
+  }
+  if (family == "normalized PMB") {
+    if (!planar) {
+      // Bulk c = 18 K / (4 pi J2), G0 = pi c s^2 J3 / 2.
+      formulaUsed = "normalized PMB, sqrt(4 G0 J2 / (9 K J3))" + where;
+      return std::sqrt(4.0 * G0 * J(2) / (9.0 * material.bulkModulus() * J(3)));
+    }
+    // Bulk c = 8 kappa / (2 pi t J1), G0 = c s^2 t J2 (paper 000 eq. 21 counts each bond twice:
+    // see doc/theory/fracture-energy.md). omega = 1: sqrt(3 pi G0 / (8 kappa delta)).
+    const double kappa =
+        inPlaneBulkModulus(material.youngsModulus(), material.poissonsRatio(), mode);
+    formulaUsed =
+        "normalized PMB, sqrt(pi G0 J1 / (4 kappa J2)), kappa = " + std::to_string(kappa) + where;
+    return std::sqrt(kPi * G0 * J(1) / (4.0 * kappa * J(2)));
+  }
+  if (family == "LPS") {
+    const double E = material.youngsModulus(), nu = material.poissonsRatio();
+    const double mu = E / (2.0 * (1.0 + nu));
+    if (!planar) {
+      // alpha = 15 mu / m, m = 4 pi J4; G0 = pi alpha s^2 J5 (bond term only).
+      formulaUsed = "LPS bond term, sqrt(4 G0 J4 / (15 mu J5))" + where;
+      return std::sqrt(4.0 * G0 * J(4) / (15.0 * mu * J(5)));
+    }
+    // alpha = 8 mu / m, m = 2 pi t J3; G0 = 2 alpha s^2 t J4 (bond term only). Conical Over Zeta
+    // (paper 001's omega): sqrt(5 (1 + nu) pi G0 / (12 E delta)), its eq. (24).
+    formulaUsed = "LPS bond term, sqrt(pi G0 J3 / (8 mu J4))" + where;
+    return std::sqrt(kPi * G0 * J(3) / (8.0 * mu * J(4)));
+  }
+  throw InputError(
+      path, "no fracture-energy formula for a " + family + " material; give Critical Stretch");
+}
+
+}  // namespace peridot
