@@ -46,6 +46,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     Timers::Scope t(timers_, "Setup: read mesh");
     cloud_ = buildPointCloud(config_.discretization);
   }
+  checkDimension();
   // Blocks of the mesh -> block groups of the deck, and each point's horizon.
   std::map<int, int> groupOfBlock;  // mesh block id -> index in config_.blocks
   std::map<std::string, int> blockIdOfName;
@@ -210,6 +211,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 
   evaluator_ = std::make_unique<ModelEvaluator>(topology_, *fields_, blocks_,
                                                 config_.discretization.influenceFunction, timers_);
+  if (planar_) evaluator_->setPlanar(cloud_.thickness);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
 
@@ -265,6 +267,40 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   if (numSteps_ < 1) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
+  }
+}
+
+void Simulation::checkDimension() {
+  planar_ = cloud_.dimension == 2;
+  for (const auto& c : config_.conditions) {
+    if (planar_ && c.coordinate == 2) {
+      throw InputError(c.path + " -> Coordinate",
+                       "z in a 2D discretization; points move in the x-y plane only");
+    }
+  }
+  const char* modeName[3] = {"3D", "plane stress", "plane strain"};
+  for (const auto& g : config_.blocks) {
+    const PlaneMode mode = config_.materials.at(g.material)->planeMode();
+    if (planar_ && mode == PlaneMode::ThreeD) {
+      throw InputError(g.path + " -> Material",
+                       "material \"" + g.material +
+                           "\" is 3D but the discretization is 2D; set \"Plane Stress: true\" or "
+                           "\"Plane Strain: true\" in Materials -> " +
+                           g.material);
+    }
+    if (!planar_ && mode != PlaneMode::ThreeD) {
+      throw InputError(g.path + " -> Material",
+                       "material \"" + g.material + "\" is " + modeName[static_cast<int>(mode)] +
+                           " but the discretization is 3D; use a 2D discretization "
+                           "(TensorProduct2DMeshGenerator, a planar Exodus mesh, or a Text File "
+                           "with Dimension: 2) or remove the plane setting");
+    }
+  }
+  if (!planar_) return;
+  if (config_.contact.enabled) {
+    throw InputError(config_.contact.path,
+                     "contact in a 2D discretization is not supported yet (its spring constant "
+                     "is the 3D one)");
   }
 }
 
@@ -473,6 +509,9 @@ void Simulation::computeAcceleration() {
       a_[3 * i + d] = force / density_[i];
     }
   }
+  // Planar: nothing moves out of the plane, whatever a model computes along z.
+  if (planar_)
+    for (int i = 0; i < topology_.numOwned; ++i) a_[3 * i + 2] = 0.0;
 }
 
 void Simulation::checkFinite(long long step, double time) {
@@ -512,6 +551,7 @@ void Simulation::run() {
       log_ << ", bond imbalance (max/avg): " << text;
     }
     log_ << "\n";
+    if (planar_) log_ << "Planar (2D) run, thickness " << cloud_.thickness << "\n";
     log_ << "Stable time step estimate: " << stableDt_ << "\n";
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";

@@ -50,6 +50,8 @@ class Simulation : public VariableSource {
 
  private:
   void openOutputs();
+  // 2D: every block's material in plane stress or strain, no z condition; 3D: no plane material.
+  void checkDimension();
   void checkVariables();
   void computeAcceleration();
   void evaluateForces(long long step);
@@ -75,6 +77,7 @@ class Simulation : public VariableSource {
   std::unique_ptr<ShortRangeContact> contact_;
   std::vector<double> density_;         // owned
   std::vector<int> blockIndexOfPoint_;  // owned -> index in blocks_
+  bool planar_ = false;                 // a 2D discretization: points in z = 0, no z motion
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;
   std::function<void(long long, double)> observer_;

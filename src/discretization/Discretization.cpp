@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "discretization/ExodusMeshReader.hpp"
 
@@ -93,21 +94,29 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
     c.meshFile = r.string("Input Mesh File");
     c.meshFilePath = r.pathOf("Input Mesh File");
     if (c.meshFile.empty()) throw InputError(c.meshFilePath, "the file name is empty");
+    c.dimension = c.type == "Exodus" ? 0 : 3;
   } else {
     const bool box = r.isSublist("TensorProduct3DMeshGenerator");
+    const bool box2 = r.isSublist("TensorProduct2DMeshGenerator");
     const bool cyl = r.isSublist("TensorProductCylinderMeshGenerator");
-    if (box == cyl) {
-      throw InputError(r.path(),
-                       "PdQuickGrid needs exactly one of the sublists TensorProduct3DMeshGenerator "
-                       "and TensorProductCylinderMeshGenerator");
+    if (int(box) + int(box2) + int(cyl) != 1) {
+      throw InputError(
+          r.path(),
+          "PdQuickGrid needs exactly one of the sublists TensorProduct3DMeshGenerator, "
+          "TensorProduct2DMeshGenerator and TensorProductCylinderMeshGenerator");
     }
-    if (box) {
-      ListReader g = r.sublist("TensorProduct3DMeshGenerator");
+    if (box || box2) {
+      // The 2D generator is the 3D one without its z axis: cells in the plane z = 0.
+      const int axesUsed = box ? 3 : 2;
+      ListReader g =
+          r.sublist(box ? "TensorProduct3DMeshGenerator" : "TensorProduct2DMeshGenerator");
       c.generatorPath = g.path();
-      c.generator = DiscretizationConfig::Generator::TensorProduct3D;
+      c.generator = box ? DiscretizationConfig::Generator::TensorProduct3D
+                        : DiscretizationConfig::Generator::TensorProduct2D;
+      c.dimension = axesUsed;
       if (g.has("Type")) g.choice("Type", {"PdQuickGrid"});
       const char* axes[3] = {"X", "Y", "Z"};
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < axesUsed; ++d) {
         c.origin[d] = g.number(std::string(axes[d]) + " Origin");
         c.length[d] = g.positiveNumber(std::string(axes[d]) + " Length");
         c.numPoints[d] = g.integer(std::string("Number Points ") + axes[d]);
@@ -116,11 +125,13 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
                            "expected a positive integer, got " + std::to_string(c.numPoints[d]));
         }
       }
+      if (axesUsed == 2) c.numPoints[2] = 1;  // one layer, of zero extent
       const double total = static_cast<double>(c.numPoints[0]) * c.numPoints[1] * c.numPoints[2];
       if (total > INT_MAX) {
-        throw InputError(g.path(), "too many points (" + std::to_string(c.numPoints[0]) + " x " +
-                                       std::to_string(c.numPoints[1]) + " x " +
-                                       std::to_string(c.numPoints[2]) + "); at most " +
+        std::string counts =
+            std::to_string(c.numPoints[0]) + " x " + std::to_string(c.numPoints[1]);
+        if (axesUsed == 3) counts += " x " + std::to_string(c.numPoints[2]);
+        throw InputError(g.path(), "too many points (" + counts + "); at most " +
                                        std::to_string(INT_MAX) + " are supported");
       }
       g.finish();
@@ -148,6 +159,31 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
     if (r.has("NeighborhoodType")) {
       r.choice("NeighborhoodType", {"Spherical"});
       c.spherical = true;
+    }
+  }
+  if (r.has("Dimension")) {
+    if (c.type != "Text File") {
+      throw InputError(r.pathOf("Dimension"),
+                       "only for Text File discretizations; the dimension of " +
+                           std::string(c.type == "Exodus"
+                                           ? "an Exodus mesh is its own (num_dim and element types)"
+                                           : "PdQuickGrid is its generator's"));
+    }
+    c.dimension = static_cast<int>(r.integer("Dimension"));
+    if (c.dimension != 2 && c.dimension != 3) {
+      throw InputError(r.pathOf("Dimension"),
+                       "expected 2 or 3, got " + std::to_string(c.dimension));
+    }
+  }
+  if (r.has("Thickness")) {
+    c.thicknessPath = r.pathOf("Thickness");
+    c.thickness = r.positiveNumber("Thickness");
+    c.thicknessGiven = true;
+    // An Exodus mesh's dimension is known once it is read (buildPointCloud checks it then).
+    if (c.dimension == 3) {
+      throw InputError(c.thicknessPath,
+                       "only for 2D discretizations (a TensorProduct2DMeshGenerator, a Text File "
+                       "with Dimension: 2, or a planar Exodus mesh); this discretization is 3D");
     }
   }
   if (r.has("Omit Bonds Between Blocks")) {
@@ -178,8 +214,12 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   const char* axes[3] = {"X", "Y", "Z"};
   for (int d = 0; d < 3; ++d)
     c.periodic.periodic[d] = r.boolean(std::string("Periodic ") + axes[d], false);
+  if (c.periodic.periodic[2] && c.dimension == 2) {
+    throw InputError(r.pathOf("Periodic Z"), "a 2D discretization has no z extent to repeat");
+  }
   if (c.periodic.any()) {
-    const bool generatorBox = c.generator == DiscretizationConfig::Generator::TensorProduct3D;
+    const bool generatorBox = c.generator == DiscretizationConfig::Generator::TensorProduct3D ||
+                              c.generator == DiscretizationConfig::Generator::TensorProduct2D;
     for (int d = 0; d < 3; ++d) {
       const std::string lower = std::string("Periodic Box Lower ") + axes[d];
       const std::string upper = std::string("Periodic Box Upper ") + axes[d];
@@ -217,7 +257,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   return c;
 }
 
-PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath) {
+PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath, int dimension,
+                        double thickness) {
   std::ifstream in(fileName);
   if (!in) throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\"");
   if (std::filesystem::is_directory(fileName)) {
@@ -248,8 +289,17 @@ PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath
     }
     if (!(volume > 0) || !std::isfinite(x + y + z + volume)) {
       throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
-                                     std::to_string(lineNumber) +
-                                     ": the volume must be positive and all values finite");
+                                     std::to_string(lineNumber) + ": the " +
+                                     (dimension == 2 ? "area" : "volume") +
+                                     " must be positive and all values finite");
+    }
+    if (dimension == 2) {
+      if (z != 0.0) {
+        throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
+                                       std::to_string(lineNumber) + ": z is " + formatNumber(z) +
+                                       "; in a 2D discretization every point has z = 0");
+      }
+      volume *= thickness;  // the fifth column is the point's area
     }
     cloud.globalId.push_back(static_cast<long long>(cloud.volume.size()));
     cloud.x.insert(cloud.x.end(), {x, y, z});
@@ -260,6 +310,8 @@ PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath
   if (cloud.size() == 0) {
     throw InputError(deckPath, "text mesh \"" + fileName + "\" contains no points");
   }
+  cloud.dimension = dimension;
+  if (dimension == 2) cloud.thickness = thickness;
   return cloud;
 }
 
@@ -283,6 +335,30 @@ PointCloud tensorProduct3D(const DiscretizationConfig& c) {
         cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
         cloud.x.push_back(c.origin[2] + (k + 0.5) * h[2]);
       }
+  for (std::size_t p = 0; p < n; ++p) cloud.globalId[p] = static_cast<long long>(p);
+  cloud.blockNames[1] = "block_1";
+  return cloud;
+}
+
+// The 3D generator's layout without the z axis: cell centres in z = 0, x fastest, then y; each
+// cell's volume is its area times the thickness.
+PointCloud tensorProduct2D(const DiscretizationConfig& c) {
+  PointCloud cloud;
+  cloud.dimension = 2;
+  cloud.thickness = c.thickness;
+  const long long nx = c.numPoints[0], ny = c.numPoints[1];
+  const double h[2] = {c.length[0] / nx, c.length[1] / ny};
+  const std::size_t n = static_cast<std::size_t>(nx * ny);
+  cloud.x.reserve(3 * n);
+  cloud.volume.assign(n, h[0] * h[1] * c.thickness);
+  cloud.blockId.assign(n, 1);
+  cloud.globalId.resize(n);
+  for (long long j = 0; j < ny; ++j)
+    for (long long i = 0; i < nx; ++i) {
+      cloud.x.push_back(c.origin[0] + (i + 0.5) * h[0]);
+      cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
+      cloud.x.push_back(0.0);
+    }
   for (std::size_t p = 0; p < n; ++p) cloud.globalId[p] = static_cast<long long>(p);
   cloud.blockNames[1] = "block_1";
   return cloud;
@@ -319,9 +395,25 @@ PointCloud tensorProductCylinder(const DiscretizationConfig& c) {
 }  // namespace
 
 PointCloud buildPointCloud(const DiscretizationConfig& c) {
-  if (c.type == "Exodus") return readExodusMesh(c.meshFile, c.meshFilePath);
-  if (c.type == "Text File") return readTextMesh(c.meshFile, c.meshFilePath);
+  if (c.type == "Exodus") {
+    PointCloud cloud = readExodusMesh(c.meshFile, c.meshFilePath, c.thickness);
+    // Keys that depend on the dimension, now that the mesh has told it.
+    if (cloud.dimension == 3 && c.thicknessGiven) {
+      throw InputError(c.thicknessPath,
+                       "only for 2D discretizations; the Exodus mesh \"" + c.meshFile + "\" is 3D");
+    }
+    if (cloud.dimension == 2 && c.periodic.periodic[2]) {
+      throw InputError(
+          "Discretization -> Periodic Z",
+          "the Exodus mesh \"" + c.meshFile + "\" is 2D: it has no z extent to repeat");
+    }
+    return cloud;
+  }
+  if (c.type == "Text File") {
+    return readTextMesh(c.meshFile, c.meshFilePath, c.dimension, c.thickness);
+  }
   if (c.generator == DiscretizationConfig::Generator::TensorProduct3D) return tensorProduct3D(c);
+  if (c.generator == DiscretizationConfig::Generator::TensorProduct2D) return tensorProduct2D(c);
   return tensorProductCylinder(c);
 }
 
@@ -333,7 +425,8 @@ NeighborhoodRule neighborhoodRule(const DiscretizationConfig& c) {
     return rule;
   }
   rule.kind = NeighborhoodRule::Kind::CellBox;
-  for (int d = 0; d < 3; ++d) {
+  const int axes = c.generator == DiscretizationConfig::Generator::TensorProduct2D ? 2 : 3;
+  for (int d = 0; d < axes; ++d) {
     rule.cellSize[d] = c.length[d] / c.numPoints[d];
     rule.cellCount[d] = static_cast<int>(c.numPoints[d]);
   }

@@ -34,19 +34,31 @@ struct PeriodicBox {
 
 // How neighbours are selected. Exodus and text meshes use the sphere |xi| <= delta (inclusive);
 // PdQuickGrid's default takes every point within +-n cells per axis (a box); with
-// `NeighborhoodType: Spherical` it keeps |xi| < delta (strict).
+// `NeighborhoodType: Spherical` it keeps |xi| < delta (strict). In 2D the sphere is a disk (all
+// points have z = 0) and the box a rectangle.
 struct NeighborhoodRule {
   enum class Kind { SphereInclusive, SphereStrict, CellBox };
   Kind kind = Kind::SphereInclusive;
   double cellSize[3] = {0, 0, 0};  // CellBox: generator spacing per axis
-  int cellCount[3] = {0, 0, 0};    // CellBox: number of cells per axis (caps n)
+  int cellCount[3] = {0, 0, 0};    // CellBox: number of cells per axis (caps n); 0: no such axis
 };
 
 struct DiscretizationConfig {
   std::string type;  // "Exodus", "Text File", "PdQuickGrid"
   std::string meshFile;
   std::string meshFilePath;  // deck path of the mesh file key, for messages
-  enum class Generator { None, TensorProduct3D, Cylinder } generator = Generator::None;
+  enum class Generator {
+    None,
+    TensorProduct3D,
+    TensorProduct2D,
+    Cylinder
+  } generator = Generator::None;
+  // 2 or 3: the `Dimension` key for a text file, the generator's; 0 for Exodus (the mesh's).
+  int dimension = 3;
+  // `Thickness` of a 2D discretization: volume = area x thickness.
+  double thickness = 1.0;
+  bool thicknessGiven = false;
+  std::string thicknessPath = "Discretization -> Thickness";
   double origin[3] = {0, 0, 0}, length[3] = {0, 0, 0};
   long long numPoints[3] = {0, 0, 0};
   double innerRadius = 0, outerRadius = 0, cylinderLength = 0, ringCenter[2] = {0, 0}, zOrigin = 0;
@@ -67,7 +79,9 @@ PointCloud buildPointCloud(const DiscretizationConfig& config);
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& config);
 
-// Reads `x y z block_id volume` lines ('#', '/', '*' start comments).
-PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath);
+// Reads `x y z block_id volume` lines ('#', '/', '*' start comments). With dimension 2 the cloud
+// is planar: every z must be 0 and the fifth column is the point's area, multiplied by thickness.
+PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath, int dimension = 3,
+                        double thickness = 1.0);
 
 }  // namespace peridot

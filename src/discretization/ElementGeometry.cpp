@@ -89,4 +89,43 @@ void tetCentroid(const double nodes[4][3], double centroid[3]) {
   }
 }
 
+double quadArea(const double nodes[4][2]) {
+  double twice = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    const double* p = nodes[a];
+    const double* q = nodes[(a + 1) % 4];
+    twice += p[0] * q[1] - q[0] * p[1];
+  }
+  return 0.5 * twice;
+}
+
+bool quadIsValid(const double nodes[4][2]) {
+  const double area = quadArea(nodes);
+  if (area == 0.0) return false;
+  for (int a = 0; a < 4; ++a) {
+    const double* previous = nodes[(a + 3) % 4];
+    const double* here = nodes[a];
+    const double* next = nodes[(a + 1) % 4];
+    const double cross = (next[0] - here[0]) * (previous[1] - here[1]) -
+                         (next[1] - here[1]) * (previous[0] - here[0]);
+    if (cross * area < 0.0) return false;
+  }
+  return true;
+}
+
+void quadNodeAverage(const double nodes[4][2], double average[2]) {
+  for (int k = 0; k < 2; ++k) {
+    average[k] = (nodes[0][k] + nodes[1][k] + nodes[2][k] + nodes[3][k]) / 4.0;
+  }
+}
+
+double triArea(const double nodes[3][2]) {
+  return 0.5 * ((nodes[1][0] - nodes[0][0]) * (nodes[2][1] - nodes[0][1]) -
+                (nodes[1][1] - nodes[0][1]) * (nodes[2][0] - nodes[0][0]));
+}
+
+void triCentroid(const double nodes[3][2], double centroid[2]) {
+  for (int k = 0; k < 2; ++k) centroid[k] = (nodes[0][k] + nodes[1][k] + nodes[2][k]) / 3.0;
+}
+
 }  // namespace peridot

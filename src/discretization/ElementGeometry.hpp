@@ -9,6 +9,10 @@
 // and the element is the trilinear image of the cube [-1,1]^3.
 //
 // TET4 (and the corner nodes 1-4 of TET10): any order; the volume is returned unsigned.
+//
+// QUAD4 (and the corner nodes 1-4 of QUAD8/QUAD9, SHELL4): corners in order around the element,
+// the bilinear image of the square [-1,1]^2 with corners (-1,-1), (+1,-1), (+1,+1), (-1,+1).
+// TRI3 (and the corner nodes 1-3 of TRI6/TRI7): any order. Planar elements are in the x-y plane.
 
 namespace peridot {
 
@@ -31,5 +35,25 @@ double tetVolume(const double nodes[4][3]);
 
 // Centroid of the tetrahedron: the mean of its 4 nodes.
 void tetCentroid(const double nodes[4][3], double centroid[3]);
+
+// Signed area of the bilinear quadrilateral, positive for counter-clockwise corners. Its Jacobian
+// determinant is affine in the reference coordinates, so the area is exact from the corners (the
+// shoelace formula).
+double quadArea(const double nodes[4][2]);
+
+// True when the bilinear map is one-to-one: the Jacobian determinant, affine in each reference
+// coordinate, keeps the sign of the area at all four corners (the cross product of the two edges
+// meeting there), i.e. the quad is convex and not self-intersecting (a bow tie). A corner with
+// collinear edges (a quad collapsed towards a triangle) is accepted.
+bool quadIsValid(const double nodes[4][2]);
+
+// Arithmetic mean of the 4 corner nodes: the point position, as hexNodeAverage is in 3D.
+void quadNodeAverage(const double nodes[4][2], double average[2]);
+
+// Signed area of the triangle, positive for counter-clockwise corners.
+double triArea(const double nodes[3][2]);
+
+// Centroid of the triangle: the mean of its 3 nodes.
+void triCentroid(const double nodes[3][2], double centroid[2]);
 
 }  // namespace peridot

@@ -189,10 +189,23 @@ std::string upperTrimmed(const char* text) {
   return s;
 }
 
-enum class ElementKind { Hex, Tet, Sphere, Unsupported };
+enum class ElementKind { Hex, Tet, Sphere, Quad, Tri, Unsupported };
+
+bool isPlanar(ElementKind kind) { return kind == ElementKind::Quad || kind == ElementKind::Tri; }
 
 ElementKind classify(const std::string& topology, long long nodesPerElement) {
-  if (topology.rfind("HEX", 0) == 0) {
+  // Exodus names planar quads QUAD/QUAD4/QUAD8/QUAD9 (SHELL4 etc. when written by a 3D mesher)
+  // and triangles TRI/TRI3/TRI6/TRI7/TRIANGLE (TRISHELL for shells); higher-order elements are
+  // read through their corner nodes, which come first.
+  if (topology.rfind("QUAD", 0) == 0 || topology.rfind("SHELL", 0) == 0) {
+    if (nodesPerElement == 4 || nodesPerElement == 8 || nodesPerElement == 9) {
+      return ElementKind::Quad;
+    }
+  } else if (topology.rfind("TRI", 0) == 0) {
+    if (nodesPerElement == 3 || nodesPerElement == 6 || nodesPerElement == 7) {
+      return ElementKind::Tri;
+    }
+  } else if (topology.rfind("HEX", 0) == 0) {
     if (nodesPerElement == 8 || nodesPerElement == 20 || nodesPerElement == 27) {
       return ElementKind::Hex;
     }
@@ -206,8 +219,11 @@ ElementKind classify(const std::string& topology, long long nodesPerElement) {
 
 class MeshReader {
  public:
-  MeshReader(const std::string& fileName, const std::string& deckPath)
-      : fileName_(fileName), deckPath_(deckPath), file_(fileName, "mesh", deckPath) {}
+  MeshReader(const std::string& fileName, const std::string& deckPath, double thickness)
+      : fileName_(fileName),
+        deckPath_(deckPath),
+        thickness_(thickness),
+        file_(fileName, "mesh", deckPath) {}
 
   PointCloud read();
 
@@ -232,6 +248,7 @@ class MeshReader {
 
   std::string fileName_;
   std::string deckPath_;
+  double thickness_ = 1.0;
   ExodusInputFile file_;
 };
 
@@ -253,9 +270,9 @@ PointCloud MeshReader::read() {
   const int exoid = file_.id();
   ex_init_params init{};
   check(ex_get_init_ext(exoid, &init), "ex_get_init_ext");
-  if (init.num_dim != 3) {
+  if (init.num_dim != 2 && init.num_dim != 3) {
     fail("the mesh is " + std::to_string(init.num_dim) +
-         "-dimensional; meshes other than 3D are not supported yet");
+         "-dimensional; only 2D and 3D meshes are supported");
   }
   if (init.num_elem <= 0) fail("the mesh has no elements");
   if (init.num_nodes <= 0) fail("the mesh has no nodes");
@@ -265,7 +282,10 @@ PointCloud MeshReader::read() {
 
   std::vector<double> coord[3];
   for (auto& c : coord) c.assign(numNodes, 0.0);
-  check(ex_get_coord(exoid, coord[0].data(), coord[1].data(), coord[2].data()), "ex_get_coord");
+  // A 2D file has no z coordinates: they stay 0.
+  check(ex_get_coord(exoid, coord[0].data(), coord[1].data(),
+                     init.num_dim == 3 ? coord[2].data() : nullptr),
+        "ex_get_coord");
   for (const auto& c : coord) {
     for (double v : c) {
       if (!std::isfinite(v)) fail("the node coordinates contain a non-finite value");
@@ -288,7 +308,10 @@ PointCloud MeshReader::read() {
   }
 
   PointCloud cloud;
-  cloud.dimension = 3;
+  cloud.dimension = init.num_dim == 2 ? 2 : 3;
+  cloud.thickness = thickness_;
+  // The first non-empty block of each kind, to name both when a mesh mixes planar and solid ones.
+  std::string firstPlanar, firstSolid;
   cloud.x.reserve(3 * numElements);
   cloud.volume.reserve(numElements);
   cloud.blockId.reserve(numElements);
@@ -339,7 +362,33 @@ PointCloud MeshReader::read() {
       fail(blockLabel + " (\"" + name + "\") has element type \"" + topology + "\" with " +
            std::to_string(block.nodesPerElement) +
            " nodes per element, which is not supported yet (supported: HEX8, HEX20, HEX27, "
-           "TET4, TET10, SPHERE)");
+           "TET4, TET10, SPHERE in 3D; QUAD4, QUAD8, QUAD9, SHELL4, TRI3, TRI6 in 2D)");
+    }
+    const std::string described = blockLabel + " (\"" + name + "\", " + topology + ")";
+    if (isPlanar(kind)) {
+      if (firstPlanar.empty()) firstPlanar = described;
+      if (firstPlanar == described && init.num_dim == 3) {
+        // A planar mesh written with three coordinates: it must lie in z = 0.
+        for (std::size_t n = 0; n < numNodes; ++n) {
+          if (coord[2][n] != 0.0) {
+            fail(described + " is a planar element block, but node " + std::to_string(n + 1) +
+                 " has z = " + std::to_string(coord[2][n]) +
+                 "; a 2D mesh must lie in the plane z = 0 (or be written with num_dim = 2)");
+          }
+        }
+      }
+      cloud.dimension = 2;
+    } else {
+      if (firstSolid.empty()) firstSolid = described;
+      if (init.num_dim == 2) {
+        fail(described +
+             " is a 3D element block in a 2D mesh (num_dim = 2); 2D meshes take "
+             "QUAD and TRI elements");
+      }
+    }
+    if (!firstPlanar.empty() && !firstSolid.empty()) {
+      fail("the mesh mixes 2D and 3D element blocks: " + firstPlanar + " and " + firstSolid +
+           "; a run is either planar or 3D");
     }
 
     block.connectivity.resize(static_cast<std::size_t>(block.numElements * block.nodesPerElement));
@@ -386,14 +435,35 @@ PointCloud MeshReader::read() {
         }
         tetCentroid(nodes, position);
         volume = tetVolume(nodes);
+      } else if (kind == ElementKind::Quad) {
+        double nodes[4][2];
+        for (int a = 0; a < 4; ++a) {
+          for (int k = 0; k < 2; ++k) nodes[a][k] = coord[k][static_cast<std::size_t>(conn[a] - 1)];
+        }
+        // As for hexes: the corner mean, the exact area, either orientation; but a bow tie or a
+        // re-entrant quad has no meaningful area (its bilinear map folds over).
+        if (!quadIsValid(nodes) && quadArea(nodes) != 0.0) {
+          fail(blockLabel + ", element " + std::to_string(elementIds[element]) +
+               ": the quadrilateral is self-intersecting or not convex (inverted element)");
+        }
+        quadNodeAverage(nodes, position);
+        volume = std::fabs(quadArea(nodes)) * thickness_;
+      } else if (kind == ElementKind::Tri) {
+        double nodes[3][2];
+        for (int a = 0; a < 3; ++a) {
+          for (int k = 0; k < 2; ++k) nodes[a][k] = coord[k][static_cast<std::size_t>(conn[a] - 1)];
+        }
+        triCentroid(nodes, position);
+        volume = std::fabs(triArea(nodes)) * thickness_;
       } else {
         for (int k = 0; k < 3; ++k) position[k] = coord[k][static_cast<std::size_t>(conn[0] - 1)];
         volume = attributes[static_cast<std::size_t>(e * param.num_attribute + 1)];
       }
       const int64_t id = elementIds[element];
       if (!(volume > 0.0) || !std::isfinite(volume)) {
-        fail(blockLabel + ", element " + std::to_string(id) + ": the element volume is " +
-             std::to_string(volume) + (kind == ElementKind::Sphere ? " (second attribute)" : "") +
+        fail(blockLabel + ", element " + std::to_string(id) + ": the element " +
+             (isPlanar(kind) ? "area x thickness" : "volume") + " is " + std::to_string(volume) +
+             (kind == ElementKind::Sphere ? " (second attribute)" : "") +
              "; it must be positive (degenerate element?)");
       }
       cloud.x.insert(cloud.x.end(), position, position + 3);
@@ -517,8 +587,9 @@ ExodusInputFile::~ExodusInputFile() {
   if (id_ >= 0) ex_close(id_);
 }
 
-PointCloud readExodusMesh(const std::string& fileName, const std::string& deckPath) {
-  MeshReader reader(fileName, deckPath);
+PointCloud readExodusMesh(const std::string& fileName, const std::string& deckPath,
+                          double thickness) {
+  MeshReader reader(fileName, deckPath, thickness);
   return reader.read();
 }
 

@@ -10,7 +10,12 @@ namespace peridot {
 //
 // - Element types: HEX8/HEX/HEX20/HEX27 (the 8 corner nodes are used), TET4/TET/TETRA/TET10 (the
 //   4 corner nodes), SPHERE (one node; the volume is the element's second attribute). Other types
-//   (QUAD, TRI, SHELL, WEDGE, ...) and 2D meshes are rejected as not supported yet.
+//   (WEDGE, PYRAMID, BEAM, ...) are rejected as not supported yet.
+// - Planar meshes: QUAD/QUAD4/QUAD8/QUAD9/SHELL4 (the 4 corner nodes) and TRI/TRI3/TRI6/TRI7 (the
+//   3 corner nodes), in a num_dim = 2 file, or in a num_dim = 3 file whose nodes all have z = 0.
+//   The cloud is then 2D (dimension 2, z = 0): position = mean of the corner nodes, volume = exact
+//   element area x `thickness`. A mesh mixing planar and solid blocks, a planar mesh off z = 0, a
+//   solid block in a 2D file, and a self-intersecting or non-convex quad are errors.
 // - Each element becomes one point: position = arithmetic mean of its corner nodes (Peridigm's
 //   choice, which the regression golds encode; for a tet it is the true centroid, for a distorted
 //   hex it is not), volume = the exact element volume (trilinear hex, straight-edged tet).
@@ -23,7 +28,8 @@ namespace peridot {
 // Every problem (missing, truncated or corrupt file, unsupported element type, no elements,
 // degenerate element, duplicate ids or names, ...) throws InputError(deckPath, message) with a
 // message naming the file, e.g. `cannot open Exodus mesh "foo.g": No such file or directory`.
-PointCloud readExodusMesh(const std::string& fileName, const std::string& deckPath);
+PointCloud readExodusMesh(const std::string& fileName, const std::string& deckPath,
+                          double thickness = 1.0);
 
 // An Exodus file opened for reading: doubles in memory, 64-bit integers through the whole API,
 // names up to the longest one the file stores; closed on destruction. The constructor throws

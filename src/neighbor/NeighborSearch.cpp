@@ -20,6 +20,7 @@ double searchReach(const NeighborhoodRule& rule, double horizon) {
   if (rule.kind != NeighborhoodRule::Kind::CellBox) return horizon;
   double r2 = 0;
   for (int d = 0; d < 3; ++d) {
+    if (rule.cellCount[d] == 0) continue;  // an axis a 2D grid does not have
     const double half = (boxCells(rule, d, horizon) + 0.5) * rule.cellSize[d];
     r2 += half * half;
   }
@@ -92,7 +93,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
     double halfBox[3] = {0, 0, 0};
     if (box)
       for (int d = 0; d < 3; ++d)
-        halfBox[d] = (boxCells(in.rule, d, h) + 0.5) * in.rule.cellSize[d];
+        halfBox[d] = in.rule.cellCount[d] == 0  // 2D: no z axis, every point has z = 0
+                         ? std::numeric_limits<double>::infinity()
+                         : (boxCells(in.rule, d, h) + 0.5) * in.rule.cellSize[d];
     const double r = in.unionOfHorizons ? reach : searchReach(in.rule, h);
     long long c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {

@@ -35,11 +35,15 @@ ExodusWriter::ExodusWriter(const std::string& fileName, const ExodusLayout& layo
   if (exoid_ < 0) throw RunError("cannot create Exodus file \"" + fileName + "\"");
   const long long n = static_cast<long long>(layout.ids.size());
   if (n > INT_MAX) throw RunError("more points than 32-bit Exodus ids can hold");
-  check(ex_put_init(exoid_, "Peridot", 3, n, n, static_cast<long long>(layout.blockIds.size()),
+  const bool planar = layout.dimension == 2;
+  check(ex_put_init(exoid_, "Peridot", planar ? 2 : 3, n, n,
+                    static_cast<long long>(layout.blockIds.size()),
                     static_cast<long long>(layout.nodeSets.size()), 0),
         "ex_put_init");
-  check(ex_put_coord(exoid_, layout.x.data(), layout.y.data(), layout.z.data()), "ex_put_coord");
+  check(ex_put_coord(exoid_, layout.x.data(), layout.y.data(), planar ? nullptr : layout.z.data()),
+        "ex_put_coord");
   std::vector<std::string> coordNames = {"x", "y", "z"};
+  if (planar) coordNames.pop_back();
   auto coordPtrs = cstrings(coordNames);
   check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");
 

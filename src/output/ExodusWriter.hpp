@@ -1,7 +1,8 @@
 #pragma once
 // Writes an Exodus II results file in Peridigm's layout: every point is a one-node SPHERE
 // element in its block; node and element ids are the point ids + 1; vectors are written as
-// NameX/NameY/NameZ nodal variables, scalars as element variables, globals as global variables.
+// NameX/NameY/NameZ nodal variables (NameX/NameY in a 2D file), scalars as element variables,
+// globals as global variables.
 // Serial: the output manager gathers the data on rank 0, which owns the writer.
 #include <string>
 #include <vector>
@@ -9,8 +10,9 @@
 namespace peridot {
 
 struct ExodusLayout {
+  int dimension = 3;            // num_dim: 2 writes x and y only (a planar run)
   std::vector<long long> ids;   // per output position: point id + 1
-  std::vector<double> x, y, z;  // reference coordinates per output position
+  std::vector<double> x, y, z;  // reference coordinates per output position (z unused in 2D)
   std::vector<int> blockIds;    // per block, in output order
   std::vector<std::string> blockNames;
   std::vector<long long> blockCounts;  // points of each block (positions are grouped by block)

@@ -29,6 +29,7 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
     it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
   }
   numPoints_ = static_cast<long long>(cloud.size());
+  dimension_ = cloud.dimension == 2 ? 2 : 3;
 
   // Output order: blocks by id, points by id within a block.
   std::vector<std::size_t> order(cloud.size());
@@ -58,6 +59,7 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
     positionOfReceived_[k] = positionOfId.at(allIds[k]);
 
   ExodusLayout layout;
+  layout.dimension = dimension_;
   for (std::size_t p : order) {
     layout.ids.push_back(cloud.globalId[p] + 1);
     layout.x.push_back(cloud.x[3 * p]);
@@ -79,15 +81,16 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
   }
   for (auto& f : files_) {
     std::vector<std::string> nodal, element, global;
+    const char* axes[3] = {"X", "Y", "Z"};
     for (const auto& v : f.variables) {
       const int c = source.components(v);
       if (c == 3) {
-        for (const char* axis : {"X", "Y", "Z"}) nodal.push_back(v + axis);
+        for (int d = 0; d < dimension_; ++d) nodal.push_back(v + axes[d]);
       } else if (c == 1) {
         element.push_back(v);
       } else {
         if (source.globalSize(v) == 3) {
-          for (const char* axis : {"X", "Y", "Z"}) global.push_back(v + axis);
+          for (int d = 0; d < dimension_; ++d) global.push_back(v + axes[d]);
         } else {
           global.push_back(v);
         }
@@ -149,6 +152,8 @@ void OutputManager::write(long long step, double time) {
       if (c == 0) {
         std::vector<double> g;
         source_.globalVariable(v, g);
+        // A vector's z component is not written in a planar run.
+        if (g.size() == 3) g.resize(static_cast<std::size_t>(dimension_));
         globals.insert(globals.end(), g.begin(), g.end());
         continue;
       }
@@ -162,7 +167,7 @@ void OutputManager::write(long long step, double time) {
       if (topology_.rank != 0) continue;
       const std::vector<double>& all = it->second;
       if (c == 3) {
-        for (int d = 0; d < 3; ++d) {
+        for (int d = 0; d < dimension_; ++d) {
           std::vector<double> comp(static_cast<std::size_t>(numPoints_));
           for (long long p = 0; p < numPoints_; ++p) comp[p] = all[3 * p + d];
           nodal.push_back(std::move(comp));

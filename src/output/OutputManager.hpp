@@ -58,6 +58,7 @@ class OutputManager {
   std::vector<int> gatherCounts_, gatherDispls_;
   std::vector<long long> positionOfReceived_;  // rank 0: output position of each gathered point
   long long numPoints_ = 0;
+  int dimension_ = 3;  // components written per vector: 2 in a planar run (no z)
 };
 
 }  // namespace peridot

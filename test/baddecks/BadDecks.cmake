@@ -98,7 +98,7 @@ peridot_baddeck(truncated_exodus_data DECK truncated_exodus.xml TRUNCATE 5000
 peridot_baddeck(truncated_exodus_header DECK truncated_exodus.xml TRUNCATE 1000
   EXPECT [[Discretization -> Input Mesh File: cannot open Exodus mesh "cut.g": ]] ALSO [[truncated or corrupt]])
 peridot_baddeck(exodus_shell_element DECK exodus_shell_element.xml CDL shell.cdl
-  EXPECT [[Discretization -> Input Mesh File: Exodus mesh "shell.g": element block 1 ("block_1") has element type "SHELL4"]])
+  EXPECT [[Discretization -> Input Mesh File: Exodus mesh "shell.g": element block 1 ("block_1", SHELL4) is a planar element block, but node 3 has z = 1]])
 peridot_baddeck(text_mesh_bad_line DECK text_mesh_bad_line.xml
   EXPECT [[Discretization -> Input Mesh File: text mesh "bad_line.txt" line 5: expected five numbers "x y z block_id volume"]])
 peridot_baddeck(pdquickgrid_zero_points DECK pdquickgrid_zero_points.yaml
@@ -243,3 +243,15 @@ peridot_baddeck(compute_of_global_variable DECK compute_of_global_variable.yaml
   EXPECT [[Compute Class Parameters -> Energy Sum -> Variable: "Global_Kinetic_Energy" is a global variable]])
 peridot_baddeck(periodic_box_too_short DECK periodic_box_too_short.yaml
   EXPECT [[Discretization -> Periodic Y: the periodic box (2) must be longer than the neighbourhood reach]])
+
+# ---- planar (2D) discretizations ----
+peridot_baddeck(planar_thickness_in_3d DECK planar_thickness_in_3d.yaml
+  EXPECT [[Discretization -> Thickness: only for 2D discretizations]])
+peridot_baddeck(planar_z_condition DECK planar_z_condition.yaml
+  EXPECT [[Boundary Conditions -> Left Velocity -> Coordinate: z in a 2D discretization]])
+peridot_baddeck(planar_3d_material DECK planar_3d_material.yaml
+  EXPECT [[Blocks -> My Blocks -> Material: material "My Material" is 3D but the discretization is 2D; set "Plane Stress: true" or "Plane Strain: true"]])
+peridot_baddeck(planar_periodic_z DECK planar_periodic_z.yaml
+  EXPECT [[Discretization -> Periodic Z: a 2D discretization has no z extent to repeat]])
+peridot_baddeck(planar_dimension_pdquickgrid DECK planar_dimension_pdquickgrid.yaml
+  EXPECT [[Discretization -> Dimension: only for Text File discretizations]])

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -527,32 +528,285 @@ TEST(ExodusMeshReader, MixedHexTetAndHex20) {
 
 TEST(ExodusMeshReader, UnsupportedElementTypeNamesBlockAndType) {
   TestMesh mesh;
-  for (int i = 0; i < 4; ++i) addNode(mesh, i % 2, i / 2, 0.0);
-  TestBlock quad;
-  quad.id = 9;
-  quad.type = "QUAD4";
-  quad.nodesPerElement = 4;
-  quad.connectivity = {1, 2, 4, 3};
-  mesh.blocks.push_back(quad);
-  TempFile file(tempPath("quad.g"));
+  for (int i = 0; i < 6; ++i) addNode(mesh, i % 2, (i / 2) % 2, i / 4);
+  TestBlock wedge;
+  wedge.id = 9;
+  wedge.type = "WEDGE6";
+  wedge.nodesPerElement = 6;
+  wedge.connectivity = {1, 2, 3, 4, 5, 6};
+  mesh.blocks.push_back(wedge);
+  TempFile file(tempPath("wedge.g"));
   writeMesh(file.path, mesh);
   expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
-                   {kDeckPath, "element block 9", "QUAD4", "not supported yet"});
+                   {kDeckPath, "element block 9", "WEDGE6", "not supported yet"});
 }
 
-TEST(ExodusMeshReader, TwoDimensionalMeshIsNotSupportedYet) {
+// ---- planar meshes ----
+
+// The bilinear quad's area by 2x2 Gauss integration of its Jacobian (exact: the determinant is
+// affine in each reference coordinate), an independent check of the shoelace area.
+double gaussQuadArea(const double n[4][2]) {
+  const double g = 1.0 / std::sqrt(3.0);
+  const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  double area = 0.0;
+  for (const auto& q : corner) {
+    const double xi = q[0] * g, eta = q[1] * g;
+    double J[2][2] = {{0, 0}, {0, 0}};  // J[k][i] = d x_k / d r_i
+    for (int a = 0; a < 4; ++a) {
+      const double dxi = corner[a][0] * (1 + corner[a][1] * eta) / 4;
+      const double deta = corner[a][1] * (1 + corner[a][0] * xi) / 4;
+      for (int k = 0; k < 2; ++k) {
+        J[k][0] += dxi * n[a][k];
+        J[k][1] += deta * n[a][k];
+      }
+    }
+    area += J[0][0] * J[1][1] - J[0][1] * J[1][0];
+  }
+  return area;
+}
+
+TEST(ElementGeometry, QuadAreaMatchesGaussIntegration) {
+  // Convex, non-affine quads (a trapezoid, a kite-like one, a general one) in both orientations.
+  const double quads[3][4][2] = {{{0, 0}, {4, 0}, {3, 2}, {1, 2}},
+                                 {{0, 0}, {2, -1}, {3, 1}, {1, 3}},
+                                 {{0.3, 0.1}, {1.7, 0.4}, {2.1, 1.9}, {-0.2, 1.2}}};
+  for (const auto& q : quads) {
+    const double reference = gaussQuadArea(q);
+    EXPECT_GT(reference, 0.0);
+    EXPECT_NEAR(peridot::quadArea(q), reference, 1e-13 * reference);
+    EXPECT_TRUE(peridot::quadIsValid(q));
+    const double reversed[4][2] = {
+        {q[0][0], q[0][1]}, {q[3][0], q[3][1]}, {q[2][0], q[2][1]}, {q[1][0], q[1][1]}};
+    EXPECT_NEAR(peridot::quadArea(reversed), -reference, 1e-13 * reference);
+    EXPECT_TRUE(peridot::quadIsValid(reversed));
+  }
+  // The trapezoid by hand: (4 + 2) / 2 * 2 = 6.
+  EXPECT_DOUBLE_EQ(peridot::quadArea(quads[0]), 6.0);
+  double c[2];
+  peridot::quadNodeAverage(quads[0], c);
+  EXPECT_DOUBLE_EQ(c[0], 2.0);
+  EXPECT_DOUBLE_EQ(c[1], 1.0);
+}
+
+TEST(ElementGeometry, BowTieAndReentrantQuadsAreInvalid) {
+  const double bowTie[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_FALSE(peridot::quadIsValid(bowTie));
+  const double reentrant[4][2] = {{0, 0}, {2, 0}, {0.5, 0.5}, {0, 2}};  // dent at node 3
+  EXPECT_FALSE(peridot::quadIsValid(reentrant));
+  EXPECT_GT(peridot::quadArea(reentrant), 0.0);
+  const double collapsed[4][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1}};  // nodes 1-3 collinear
+  EXPECT_TRUE(peridot::quadIsValid(collapsed));
+  EXPECT_DOUBLE_EQ(peridot::quadArea(collapsed), 1.0);
+}
+
+TEST(ElementGeometry, TriAreaAndCentroid) {
+  const double tri[3][2] = {{1, 1}, {4, 1}, {1, 3}};
+  EXPECT_DOUBLE_EQ(peridot::triArea(tri), 3.0);
+  const double flipped[3][2] = {{1, 1}, {1, 3}, {4, 1}};
+  EXPECT_DOUBLE_EQ(peridot::triArea(flipped), -3.0);
+  double c[2];
+  peridot::triCentroid(tri, c);
+  EXPECT_DOUBLE_EQ(c[0], 2.0);
+  EXPECT_NEAR(c[1], 5.0 / 3.0, 1e-15);
+}
+
+// Two QUAD4 (one clockwise) and a TRI3 block in a num_dim = 2 file, with node sets.
+TestMesh planarMesh() {
   TestMesh mesh;
   mesh.dimension = 2;
-  for (int i = 0; i < 4; ++i) addNode(mesh, i % 2, i / 2, 0.0);
+  // nodes 1..6: a 2 x 1 strip of unit-high cells, the right one a trapezoid; 7: a triangle apex
+  addNode(mesh, 0, 0, 0);    // 1
+  addNode(mesh, 1, 0, 0);    // 2
+  addNode(mesh, 3, 0, 0);    // 3
+  addNode(mesh, 0, 1, 0);    // 4
+  addNode(mesh, 1, 1, 0);    // 5
+  addNode(mesh, 2, 1, 0);    // 6
+  addNode(mesh, 1.5, 4, 0);  // 7
+  TestBlock quads;
+  quads.id = 3;
+  quads.type = "QUAD4";
+  quads.nodesPerElement = 4;
+  quads.connectivity = {1, 2, 5, 4,   // unit square, counter-clockwise
+                        2, 5, 6, 3};  // trapezoid 1..3 / 1..2, clockwise (mirrored)
+  quads.name = "plate";
+  TestBlock tris;
+  tris.id = 8;
+  tris.type = "TRI3";
+  tris.nodesPerElement = 3;
+  tris.connectivity = {5, 6, 7};
+  mesh.blocks = {quads, tris};
+  mesh.elementIds = {11, 12, 13};
+  mesh.nodeSets.push_back({1, "left", {1, 4}});
+  mesh.nodeSets.push_back({2, "middle", {5}});
+  return mesh;
+}
+
+TEST(ExodusMeshReader, ReadsQuadAndTriBlocksAsAPlanarCloud) {
+  TempFile file(tempPath("planar.g"));
+  writeMesh(file.path, planarMesh());
+  const double thickness = 0.25;
+  const auto cloud = peridot::readExodusMesh(file.path, kDeckPath, thickness);
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_EQ(cloud.dimension, 2);
+  EXPECT_EQ(cloud.thickness, thickness);
+  EXPECT_EQ(cloud.globalId, (std::vector<long long>{10, 11, 12}));
+  EXPECT_EQ(cloud.blockId, (std::vector<int>{3, 3, 8}));
+  EXPECT_EQ(cloud.blockNames.at(3), "plate");
+  EXPECT_EQ(cloud.blockNames.at(8), "block_8");
+  // Areas by hand: unit square 1; trapezoid with parallel sides 2 (y = 0) and 1 (y = 1), height
+  // 1: 1.5; triangle (1,1), (2,1), (1.5,4): base 1, height 3: 1.5.
+  EXPECT_DOUBLE_EQ(cloud.volume[0], 1.0 * thickness);
+  EXPECT_DOUBLE_EQ(cloud.volume[1], 1.5 * thickness);
+  EXPECT_DOUBLE_EQ(cloud.volume[2], 1.5 * thickness);
+  // Positions: corner means (z = 0).
+  const std::vector<double> expected = {0.5, 0.5, 0.0, 7.0 / 4, 0.5, 0.0, 1.5, 2.0, 0.0};
+  ASSERT_EQ(cloud.x.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(cloud.x[k], expected[k], 1e-15);
+  ASSERT_EQ(cloud.pointSets.size(), 2u);
+  EXPECT_EQ(cloud.pointSets[0].name, "left");
+  EXPECT_EQ(cloud.pointSets[0].globalIds, (std::vector<long long>{10}));
+  EXPECT_EQ(cloud.pointSets[1].name, "middle");  // node 5 touches all three elements
+  EXPECT_EQ(cloud.pointSets[1].globalIds, (std::vector<long long>{10, 11, 12}));
+}
+
+TEST(ExodusMeshReader, HigherOrderPlanarElementsUseTheirCorners) {
+  // QUAD8 / TRI6 blocks: the mid-side nodes (here off the straight edges) do not change the
+  // point; SHELL4 counts as a quad.
+  TestMesh mesh;
+  mesh.dimension = 2;
+  for (const auto& p : std::vector<std::array<double, 2>>{
+           {0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, -0.3}, {2.2, 1}, {1, 2.4}, {-0.1, 1}})
+    addNode(mesh, p[0], p[1], 0);
+  TestBlock quad8;
+  quad8.id = 1;
+  quad8.type = "QUAD8";
+  quad8.nodesPerElement = 8;
+  quad8.connectivity = {1, 2, 3, 4, 5, 6, 7, 8};
+  TestBlock tri6;
+  tri6.id = 2;
+  tri6.type = "TRI6";
+  tri6.nodesPerElement = 6;
+  tri6.connectivity = {1, 2, 3, 5, 6, 7};
+  TestBlock shell;
+  shell.id = 3;
+  shell.type = "SHELL4";
+  shell.nodesPerElement = 4;
+  shell.connectivity = {1, 2, 3, 4};
+  mesh.blocks = {quad8, tri6, shell};
+  TempFile file(tempPath("quad8.g"));
+  writeMesh(file.path, mesh);
+  const auto cloud = peridot::readExodusMesh(file.path, kDeckPath);
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_EQ(cloud.volume, (std::vector<double>{4.0, 2.0, 4.0}));
+  EXPECT_EQ(cloud.x[0], 1.0);
+  EXPECT_EQ(cloud.x[1], 1.0);
+  EXPECT_NEAR(cloud.x[3], 4.0 / 3, 1e-15);
+  EXPECT_NEAR(cloud.x[4], 2.0 / 3, 1e-15);
+}
+
+TEST(ExodusMeshReader, PlanarMeshWithThreeCoordinatesInZZero) {
+  TestMesh mesh = planarMesh();
+  mesh.dimension = 3;
+  TempFile file(tempPath("planar3.g"));
+  writeMesh(file.path, mesh);
+  const auto cloud = peridot::readExodusMesh(file.path, kDeckPath);
+  EXPECT_EQ(cloud.dimension, 2);
+  EXPECT_EQ(cloud.volume, (std::vector<double>{1.0, 1.5, 1.5}));
+}
+
+TEST(ExodusMeshReader, PlanarMeshOffTheXYPlaneIsAnError) {
+  TestMesh mesh = planarMesh();
+  mesh.dimension = 3;
+  mesh.z[6] = 0.5;
+  TempFile file(tempPath("tilted.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {kDeckPath, "element block 3", "node 7", "z = 0"});
+}
+
+TEST(ExodusMeshReader, MixedPlanarAndSolidBlocksAreAnError) {
+  TestMesh mesh;
+  for (const auto& c : kUnitCube) addNode(mesh, c[0], c[1], c[2]);
+  TestBlock hex;
+  hex.connectivity = {1, 2, 3, 4, 5, 6, 7, 8};
+  TestBlock quad;
+  quad.id = 2;
+  quad.type = "QUAD4";
+  quad.nodesPerElement = 4;
+  quad.connectivity = {1, 2, 3, 4};
+  mesh.blocks = {hex, quad};
+  TempFile file(tempPath("mixed.g"));
+  writeMesh(file.path, mesh);
+  // The planar block's nodes are in z = 0 but others are not: the z check speaks first.
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); }, {"element block 2"});
+  // With every node in z = 0 except none used off-plane, the mix itself is the error.
+  TestMesh flat = planarMesh();
+  flat.dimension = 3;
+  TestBlock tet;
+  tet.id = 20;
+  tet.type = "TET4";
+  tet.nodesPerElement = 4;
+  tet.connectivity = {1, 2, 4, 7};  // flat, but the mix is reported before its volume
+  flat.blocks.push_back(tet);
+  TempFile file2(tempPath("mixed2.g"));
+  writeMesh(file2.path, flat);
+  expectInputError([&] { peridot::readExodusMesh(file2.path, kDeckPath); },
+                   {"mixes 2D and 3D", "element block 3", "element block 20", "TET4"});
+}
+
+TEST(ExodusMeshReader, SolidBlockInATwoDimensionalFileIsAnError) {
+  TestMesh mesh;
+  mesh.dimension = 2;
+  addNode(mesh, 0.0, 0.0, 0.0);
+  TestBlock ball;
+  ball.id = 4;
+  ball.type = "SPHERE";
+  ball.nodesPerElement = 1;
+  ball.numAttributes = 2;
+  ball.connectivity = {1};
+  ball.attributes = {0.5, 1.0};
+  mesh.blocks.push_back(ball);
+  TempFile file(tempPath("ball2d.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {"element block 4", "SPHERE", "2D mesh"});
+}
+
+TEST(ExodusMeshReader, BowTieQuadIsAnError) {
+  TestMesh mesh;
+  mesh.dimension = 2;
+  addNode(mesh, 0, 0, 0);
+  addNode(mesh, 1, 1, 0);
+  addNode(mesh, 1, 0, 0);
+  addNode(mesh, 0, 2, 0);  // not symmetric: the signed area is not zero
   TestBlock quad;
   quad.type = "QUAD4";
   quad.nodesPerElement = 4;
-  quad.connectivity = {1, 2, 4, 3};
+  quad.connectivity = {1, 2, 3, 4};
   mesh.blocks.push_back(quad);
-  TempFile file(tempPath("quad2d.g"));
+  mesh.elementIds = {77};
+  TempFile file(tempPath("bowtie.g"));
   writeMesh(file.path, mesh);
   expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
-                   {"2-dimensional", "not supported yet"});
+                   {"element 77", "self-intersecting"});
+}
+
+TEST(ExodusMeshReader, DegenerateTriangleIsAnError) {
+  TestMesh mesh;
+  mesh.dimension = 2;
+  addNode(mesh, 0, 0, 0);
+  addNode(mesh, 1, 1, 0);
+  addNode(mesh, 2, 2, 0);
+  TestBlock tri;
+  tri.type = "TRI3";
+  tri.nodesPerElement = 3;
+  tri.connectivity = {1, 2, 3};
+  mesh.blocks.push_back(tri);
+  mesh.elementIds = {5};
+  TempFile file(tempPath("flattri.g"));
+  writeMesh(file.path, mesh);
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {"element 5", "area x thickness", "degenerate"});
 }
 
 TEST(ExodusMeshReader, MeshWithoutElementsIsAnError) {
