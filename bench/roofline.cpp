@@ -121,6 +121,19 @@ void CriticalStretchLoop(benchmark::State& state) {
 }
 BENCHMARK(CriticalStretchLoop)->Unit(benchmark::kMillisecond);
 
+// What a PMB + critical-stretch step runs: the stretch check fused into the force loop (the
+// evaluator's default), against PMBForceLoop + CriticalStretchLoop done separately.
+void PMBForceLoopFusedCriticalStretch(benchmark::State& state) {
+  Scene& s = scene();
+  ModelState st = s.evaluator->state();
+  st.breakableBondDamage = const_cast<float*>(st.bondDamage);
+  st.fusedCriticalStretch = s.blocks[0].damage->fusableCriticalStretch();
+  for (auto _ : state) s.blocks[0].material->computeForce(st, s.blocks[0].points);
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(PMBForceLoopFusedCriticalStretch)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 int main(int argc, char** argv) {
