@@ -125,6 +125,9 @@ void writeMesh(const std::string& path, const TestMesh& mesh) {
     }
   }
   if (!mesh.elementIds.empty()) {
+    std::size_t numElements = 0;
+    for (const auto& b : mesh.blocks) numElements += b.connectivity.size() / b.nodesPerElement;
+    ASSERT_EQ(mesh.elementIds.size(), numElements) << "the test mesh needs one id per element";
     ASSERT_GE(ex_put_id_map(exoid, EX_ELEM_MAP, mesh.elementIds.data()), 0);
   }
   for (const auto& s : mesh.nodeSets) {
@@ -748,6 +751,7 @@ TEST(ExodusMeshReader, MixedPlanarAndSolidBlocksAreAnError) {
   tet.nodesPerElement = 4;
   tet.connectivity = {1, 2, 4, 7};  // flat, but the mix is reported before its volume
   flat.blocks.push_back(tet);
+  flat.elementIds.push_back(14);  // one id per element: the map is written from this vector
   TempFile file2(tempPath("mixed2.g"));
   writeMesh(file2.path, flat);
   expectInputError([&] { peridot::readExodusMesh(file2.path, kDeckPath); },
