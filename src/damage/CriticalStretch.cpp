@@ -57,15 +57,16 @@ void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>&
   }
 }
 
-PERIDOT_REGISTER_DAMAGE("Critical Stretch", CriticalStretch,
-                        "Bonds break irreversibly when their stretch exceeds the critical stretch",
-                        (std::vector<ParameterDoc>{
-                            {"Critical Stretch", "positive number: s_c (or give Fracture Energy)"},
-                            {"Fracture Energy",
-                             "positive number: G0, from which s_c is derived per block from its "
-                             "material, dimension and influence function (3D PMB: "
-                             "sqrt(5 G0 / (9 K delta)); see doc/theory/fracture-energy.md)"},
-                            {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
-                            {"Verbose", "bool, default false"}}))
+PERIDOT_REGISTER_DAMAGE(
+    "Critical Stretch", CriticalStretch,
+    "Bonds break irreversibly when their stretch exceeds the critical stretch",
+    (std::vector<ParameterDoc>{
+        {"Critical Stretch", "positive number: s_c (or give Fracture Energy)"},
+        {"Fracture Energy",
+         "positive number: G0, from which s_c is derived per block from its "
+         "material, dimension and influence function (3D PMB: "
+         "sqrt(5 G0 / (9 K delta)); see doc/theory/planar-and-fracture-energy.md)"},
+        {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
+        {"Verbose", "bool, default false"}}))
 
 }  // namespace peridot

@@ -104,7 +104,7 @@ PERIDOT_REGISTER_DAMAGE(
         {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
         {"Fracture Energy",
          "positive number: G0, from which S_c is derived per block from its material, dimension "
-         "and influence function (doc/theory/fracture-energy.md)"},
+         "and influence function (doc/theory/planar-and-fracture-energy.md)"},
         {"S0 Plus Over Critical Stretch",
          "number in [0, 1], default 0.95: S0+ = this x S_c, where the force starts to soften and "
          "the bond to break"},

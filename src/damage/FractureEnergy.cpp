@@ -61,7 +61,7 @@ double criticalStretchFromFractureEnergy(const MaterialModel& material, double h
       return std::sqrt(4.0 * G0 * J(2) / (9.0 * material.bulkModulus() * J(3)));
     }
     // Bulk c = 8 kappa / (2 pi t J1), G0 = c s^2 t J2 (paper 000 eq. 21 counts each bond twice:
-    // see doc/theory/fracture-energy.md). omega = 1: sqrt(3 pi G0 / (8 kappa delta)).
+    // see doc/theory/planar-and-fracture-energy.md). omega = 1: sqrt(3 pi G0 / (8 kappa delta)).
     const double kappa =
         inPlaneBulkModulus(material.youngsModulus(), material.poissonsRatio(), mode);
     formulaUsed =

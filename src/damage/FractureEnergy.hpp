@@ -1,7 +1,7 @@
 #pragma once
 // Critical stretch from a fracture energy G0 for each material model, dimension and influence
-// function (derivations in doc/theory/fracture-energy.md). Shared by the damage models that
-// accept `Fracture Energy` (Critical Stretch, DTT).
+// function (derivations in doc/theory/planar-and-fracture-energy.md). Shared by the damage models
+// that accept `Fracture Energy` (Critical Stretch, DTT).
 #include <string>
 
 #include "materials/MaterialModel.hpp"

@@ -84,7 +84,7 @@ PERIDOT_REGISTER_DAMAGE(
         {"Critical Stretch", "positive number: S_c (or give Fracture Energy)"},
         {"Fracture Energy",
          "positive number: G0, from which S_c is derived per block from its material, dimension "
-         "and influence function (doc/theory/fracture-energy.md)"},
+         "and influence function (doc/theory/planar-and-fracture-energy.md)"},
         {"Verbose", "bool, default false"}}))
 
 }  // namespace peridot
