@@ -7,15 +7,7 @@
 
 namespace peridot {
 
-CriticalStretch::CriticalStretch(ListReader& p) : path_(p.path()) {
-  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
-    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
-  }
-  if (p.has("Critical Stretch")) {
-    criticalStretch_ = p.positiveNumber("Critical Stretch");
-  } else {
-    fractureEnergy_ = p.positiveNumber("Fracture Energy");
-  }
+CriticalStretch::CriticalStretch(ListReader& p) : criticalStretch_(p) {
   if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
     throw InputError(p.pathOf("Thermal Expansion Coefficient"),
                      "thermal strains are not supported by Peridot yet");
@@ -25,17 +17,7 @@ CriticalStretch::CriticalStretch(ListReader& p) : path_(p.path()) {
 
 void CriticalStretch::bind(const MaterialModel& material, double horizon,
                            const std::string& blockName, std::ostream& log) {
-  if (fractureEnergy_ <= 0) return;
-  if (!(horizon > 0)) {
-    throw InputError(path_ + " -> Fracture Energy",
-                     "needs a constant horizon in block " + blockName);
-  }
-  std::string formula;
-  criticalStretch_ = criticalStretchFromFractureEnergy(
-      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
-      path_ + " -> Fracture Energy (block " + blockName + ")");
-  log << "Critical stretch of block " << blockName << " from the fracture energy "
-      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+  criticalStretch_.bind(material, horizon, blockName, log);
 }
 
 void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>& points,
@@ -44,7 +26,7 @@ void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>&
   const int* neighbors = s.topology->neighbors.data();
   const double* y = s.y;
   const double* zeta = s.bondLength;
-  const double sc = criticalStretch_;
+  const double sc = criticalStretch_.value();
   for (int i : points) {
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {

@@ -2,6 +2,7 @@
 // Peridigm's "Critical Stretch": a bond breaks for good once its stretch exceeds the critical
 // stretch (tension only).
 #include "damage/DamageModel.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -10,17 +11,15 @@ class CriticalStretch : public DamageModel {
   explicit CriticalStretch(ListReader& params);
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
-  double criticalStretch() const { return criticalStretch_; }
-  double fusableCriticalStretch() const override { return criticalStretch_; }
-  bool bindsToBlock() const override { return fractureEnergy_ > 0; }
+  double criticalStretch() const { return criticalStretch_.value(); }
+  double fusableCriticalStretch() const override { return criticalStretch_.value(); }
+  bool bindsToBlock() const override { return criticalStretch_.fromFractureEnergy(); }
   // With `Fracture Energy`, derives the critical stretch from the block's material and horizon.
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,
             std::ostream& log) override;
 
  private:
-  double criticalStretch_ = 0;
-  double fractureEnergy_ = 0;  // G0, when given instead of the critical stretch
-  std::string path_;
+  CriticalStretchInput criticalStretch_;
 };
 
 }  // namespace peridot

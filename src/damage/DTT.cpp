@@ -9,15 +9,7 @@
 
 namespace peridot {
 
-DTT::DTT(ListReader& p) : path_(p.path()) {
-  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
-    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
-  }
-  if (p.has("Critical Stretch")) {
-    criticalStretch_ = p.positiveNumber("Critical Stretch");
-  } else {
-    fractureEnergy_ = p.positiveNumber("Fracture Energy");
-  }
+DTT::DTT(ListReader& p) : criticalStretch_(p) {
   s0PlusFactor_ = p.number("S0 Plus Over Critical Stretch", 0.95);
   s1PlusFactor_ = p.number("S1 Plus Over Critical Stretch", 1.05);
   s0Minus_ = p.number("S0 Minus", -0.98);
@@ -52,17 +44,7 @@ DTT::DTT(ListReader& p) : path_(p.path()) {
 
 void DTT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
                std::ostream& log) {
-  if (fractureEnergy_ <= 0) return;
-  if (!(horizon > 0)) {
-    throw InputError(path_ + " -> Fracture Energy",
-                     "needs a constant horizon in block " + blockName);
-  }
-  std::string formula;
-  criticalStretch_ = criticalStretchFromFractureEnergy(
-      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
-      path_ + " -> Fracture Energy (block " + blockName + ")");
-  log << "Critical stretch of block " << blockName << " from the fracture energy "
-      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+  criticalStretch_.bind(material, horizon, blockName, log);
 }
 
 BondLaw DTT::bondLaw() const {
@@ -70,8 +52,8 @@ BondLaw DTT::bondLaw() const {
   law.kind = BondLaw::Kind::Smooth;
   law.s1Minus = s1Minus_;
   law.s0Minus = s0Minus_;
-  law.s0Plus = s0PlusFactor_ * criticalStretch_;
-  law.s1Plus = s1PlusFactor_ * criticalStretch_;
+  law.s0Plus = s0PlusFactor_ * criticalStretch_.value();
+  law.s1Plus = s1PlusFactor_ * criticalStretch_.value();
   return law;
 }
 
@@ -80,7 +62,8 @@ void DTT::computeDamage(const ModelState& s, const std::vector<int>& points, flo
   const int* neighbors = s.topology->neighbors.data();
   const double* y = s.y;
   const double* zeta = s.bondLength;
-  const double s0 = s0PlusFactor_ * criticalStretch_, s1 = s1PlusFactor_ * criticalStretch_;
+  const double s0 = s0PlusFactor_ * criticalStretch_.value(),
+               s1 = s1PlusFactor_ * criticalStretch_.value();
   for (int i : points) {
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {

@@ -8,6 +8,7 @@
 // bond damage itself is the history variable (d <- max(d, 1 - mu(s))), and this equals
 // rounding 1 - mu(S*) with S* kept in double, bit for bit (see doc/theory/damage.md).
 #include "damage/DamageModel.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -22,23 +23,21 @@ class DTT : public DamageModel {
   explicit DTT(ListReader& params);
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
-  bool bindsToBlock() const override { return fractureEnergy_ > 0; }
+  bool bindsToBlock() const override { return criticalStretch_.fromFractureEnergy(); }
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,
             std::ostream& log) override;
   BondLaw bondLaw() const override;
-  double criticalStretch() const { return criticalStretch_; }
+  double criticalStretch() const { return criticalStretch_.value(); }
   // mu(S*) of paper 002 eq. 6.
   double damageFactor(double sStar) const {
-    return 1.0 - dttBrokenFraction(sStar, s0PlusFactor_ * criticalStretch_,
-                                   s1PlusFactor_ * criticalStretch_);
+    return 1.0 - dttBrokenFraction(sStar, s0PlusFactor_ * criticalStretch_.value(),
+                                   s1PlusFactor_ * criticalStretch_.value());
   }
 
  private:
-  double criticalStretch_ = 0;
-  double fractureEnergy_ = 0;  // G0, when given instead of the critical stretch
+  CriticalStretchInput criticalStretch_;
   double s0PlusFactor_ = 0.95, s1PlusFactor_ = 1.05;  // S0+ and S1+ over S_c
   double s0Minus_ = -0.98, s1Minus_ = -0.99;
-  std::string path_;
 };
 
 }  // namespace peridot

@@ -86,4 +86,30 @@ double criticalStretchFromFractureEnergy(const MaterialModel& material, double h
       path, "no fracture-energy formula for a " + family + " material; give Critical Stretch");
 }
 
+CriticalStretchInput::CriticalStretchInput(ListReader& p) : path_(p.path()) {
+  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
+    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
+  }
+  if (p.has("Critical Stretch")) {
+    criticalStretch_ = p.positiveNumber("Critical Stretch");
+  } else {
+    fractureEnergy_ = p.positiveNumber("Fracture Energy");
+  }
+}
+
+void CriticalStretchInput::bind(const MaterialModel& material, double horizon,
+                                const std::string& blockName, std::ostream& log) {
+  if (fractureEnergy_ <= 0) return;
+  if (!(horizon > 0)) {
+    throw InputError(path_ + " -> Fracture Energy",
+                     "needs a constant horizon in block " + blockName);
+  }
+  std::string formula;
+  criticalStretch_ = criticalStretchFromFractureEnergy(
+      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
+      path_ + " -> Fracture Energy (block " + blockName + ")");
+  log << "Critical stretch of block " << blockName << " from the fracture energy "
+      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+}
+
 }  // namespace peridot

@@ -2,6 +2,7 @@
 // Critical stretch from a fracture energy G0 for each material model, dimension and influence
 // function (derivations in doc/theory/planar-and-fracture-energy.md). Shared by the damage models
 // that accept `Fracture Energy` (Critical Stretch, DTT).
+#include <ostream>
 #include <string>
 
 #include "materials/MaterialModel.hpp"
@@ -21,5 +22,24 @@ double criticalStretchFromFractureEnergy(const MaterialModel& material, double h
                                          const std::string& influenceFunction,
                                          std::string& formulaUsed,
                                          const std::string& path = "Fracture Energy");
+
+// A damage model's critical stretch as the deck gives it: `Critical Stretch` directly, or
+// `Fracture Energy`, from which bind() derives it per block (and prints it). Exactly one of
+// the two keys; shared by every damage model that has a critical stretch.
+class CriticalStretchInput {
+ public:
+  explicit CriticalStretchInput(ListReader& params);
+  double value() const { return criticalStretch_; }
+  bool fromFractureEnergy() const { return fractureEnergy_ > 0; }
+  // With `Fracture Energy`: s_c from the block's material (and the influence function it
+  // assumes) and constant horizon; a no-op otherwise.
+  void bind(const MaterialModel& material, double horizon, const std::string& blockName,
+            std::ostream& log);
+
+ private:
+  double criticalStretch_ = 0;
+  double fractureEnergy_ = 0;  // G0, when given instead of the critical stretch
+  std::string path_;
+};
 
 }  // namespace peridot

@@ -14,31 +14,11 @@ double lsjtDamageFactor(double integral, double xc) {
   return std::exp(1.0 - 1.0 / (1.0 - std::pow(integral / xc, 2.01)));
 }
 
-LSJT::LSJT(ListReader& p) : path_(p.path()) {
-  if (p.has("Critical Stretch") == p.has("Fracture Energy")) {
-    throw InputError(p.path(), "give exactly one of \"Critical Stretch\" and \"Fracture Energy\"");
-  }
-  if (p.has("Critical Stretch")) {
-    criticalStretch_ = p.positiveNumber("Critical Stretch");
-  } else {
-    fractureEnergy_ = p.positiveNumber("Fracture Energy");
-  }
-  p.boolean("Verbose", false);
-}
+LSJT::LSJT(ListReader& p) : criticalStretch_(p) { p.boolean("Verbose", false); }
 
 void LSJT::bind(const MaterialModel& material, double horizon, const std::string& blockName,
                 std::ostream& log) {
-  if (fractureEnergy_ <= 0) return;
-  if (!(horizon > 0)) {
-    throw InputError(path_ + " -> Fracture Energy",
-                     "needs a constant horizon in block " + blockName);
-  }
-  std::string formula;
-  criticalStretch_ = criticalStretchFromFractureEnergy(
-      material, horizon, fractureEnergy_, material.influenceFunctionAssumed(), formula,
-      path_ + " -> Fracture Energy (block " + blockName + ")");
-  log << "Critical stretch of block " << blockName << " from the fracture energy "
-      << fractureEnergy_ << ": " << criticalStretch_ << " (" << formula << ")\n";
+  criticalStretch_.bind(material, horizon, blockName, log);
 }
 
 void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
@@ -48,7 +28,7 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
   const double dt = started_ ? s.dt : 0.0;
   started_ = true;
   if (dt == 0.0) return;
-  const double sc = criticalStretch_;
+  const double sc = criticalStretch_.value();
   const double xc = lsjtOverstretchRate(1.05 * sc, sc) * s.dt;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();

@@ -9,6 +9,7 @@
 // double bond field ("LSJT_History_Integral", the state a restart must save); the bond damage
 // holds 1 - mu~. Used with the "Linearized LPS" material this is paper 001's LSJ-T model.
 #include "damage/DamageModel.hpp"
+#include "damage/FractureEnergy.hpp"
 
 namespace peridot {
 
@@ -33,15 +34,13 @@ class LSJT : public DamageModel {
   bool bindsToBlock() const override { return true; }
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,
             std::ostream& log) override;
-  double criticalStretch() const { return criticalStretch_; }
+  double criticalStretch() const { return criticalStretch_.value(); }
 
   static constexpr const char* kHistoryIntegral = "LSJT_History_Integral";
 
  private:
-  double criticalStretch_ = 0;
-  double fractureEnergy_ = 0;
+  CriticalStretchInput criticalStretch_;
   bool started_ = false;
-  std::string path_;
 };
 
 }  // namespace peridot

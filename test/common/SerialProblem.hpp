@@ -1,8 +1,10 @@
 #pragma once
 // A serial problem for kernel tests: points (unit volume unless given), one block, a model
-// evaluator; optionally periodic.
+// evaluator; optionally periodic, with an influence function, or planar (thickness > 0: the
+// points must lie in z = 0 and their volumes include the thickness).
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "evaluator/ModelEvaluator.hpp"
@@ -21,7 +23,8 @@ struct Problem {
 
   Problem(const std::vector<std::array<double, 3>>& points, double horizon,
           std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage = nullptr,
-          const PeriodicBox& periodic = PeriodicBox(), double volume = 1.0) {
+          const PeriodicBox& periodic = PeriodicBox(), double volume = 1.0,
+          const std::string& influenceFunction = "One", double planarThickness = 0.0) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       cloud.x.insert(cloud.x.end(), points[i].begin(), points[i].end());
       cloud.volume.push_back(volume);
@@ -29,6 +32,10 @@ struct Problem {
       cloud.globalId.push_back(static_cast<long long>(i));
     }
     cloud.blockNames[1] = "block_1";
+    if (planarThickness > 0) {
+      cloud.dimension = 2;
+      cloud.thickness = planarThickness;
+    }
     std::vector<double> h(points.size(), horizon);
     TopologyOptions options;
     options.periodic = periodic;
@@ -53,7 +60,9 @@ struct Problem {
     b.damage = std::move(damage);
     for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
     blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    evaluator =
+        std::make_unique<ModelEvaluator>(topology, *fields, blocks, influenceFunction, timers);
+    if (planarThickness > 0) evaluator->setPlanar(planarThickness);
     evaluator->initialize();
   }
   // Local index of the point with global id g.

@@ -348,60 +348,20 @@ TEST(LSJTHistory, IntegralAccumulatesAndPersists) {
 
 // ---- Linearized LPS: homogeneous energies ----
 
-// SerialProblem's set-up with a planar evaluator (points in z = 0, volumes with the thickness).
-struct PlanarProblem {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-  PlanarProblem(const std::vector<std::array<double, 3>>& points, double horizon,
-                std::shared_ptr<MaterialModel> material, const PeriodicBox& periodic, double volume,
-                double thickness) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      cloud.x.insert(cloud.x.end(), points[i].begin(), points[i].end());
-      cloud.volume.push_back(volume);
-      cloud.blockId.push_back(1);
-      cloud.globalId.push_back(static_cast<long long>(i));
-    }
-    cloud.blockNames[1] = "block_1";
-    cloud.dimension = 2;
-    std::vector<double> h(points.size(), horizon);
-    TopologyOptions options;
-    options.periodic = periodic;
-    topology = buildTopology(cloud, h, options, MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
-    fields->markPosition("Coordinates");
-    for (int k = 0; k < topology.numOverlap; ++k) {
-      const std::size_t p = topology.overlapCloudIndex[k];
-      const double* shift = topology.shiftOf(k);
-      for (int d = 0; d < 3; ++d) x[3 * k + d] = y[3 * k + d] = cloud.x[3 * p + d] + shift[d];
-      v[k] = volume;
-      hz[k] = horizon;
-    }
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = std::move(material);
-    for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
-    evaluator->setPlanar(thickness);
-    evaluator->initialize();
-  }
-};
+// SerialProblem with a planar evaluator (points in z = 0, volumes with the thickness).
+testing::Problem planarProblem(const std::vector<std::array<double, 3>>& points, double horizon,
+                               std::shared_ptr<MaterialModel> material, const PeriodicBox& periodic,
+                               double volume, double thickness) {
+  return testing::Problem(points, horizon, std::move(material), nullptr, periodic, volume, "One",
+                          thickness);
+}
 
 // A plane-stress material on a 3D discretization is refused.
 TEST(LinearizedLPSEnergy, PlaneModeMustMatchTheDiscretization) {
   EXPECT_THROW(Problem({{0, 0, 0}, {1, 0, 0}}, 1.5, linearized(1.0, 0.2, "Plane Stress")),
                InputError);
   EXPECT_THROW(
-      PlanarProblem({{0, 0, 0}, {1, 0, 0}}, 1.5, linearized(1.0, 0.2), PeriodicBox(), 1.0, 1.0),
+      planarProblem({{0, 0, 0}, {1, 0, 0}}, 1.5, linearized(1.0, 0.2), PeriodicBox(), 1.0, 1.0),
       InputError);
 }
 
@@ -436,7 +396,7 @@ double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const
     box.upper[d] = n - 0.5;
   }
   if (planar) {
-    PlanarProblem pr(pts, delta, material, box, thickness, thickness);
+    auto pr = planarProblem(pts, delta, material, box, thickness, thickness);
     return deformedCentreEnergy(pr, H);
   }
   Problem pr(pts, delta, material, nullptr, box);
