@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "TempFile.hpp"
 #include "core/Error.hpp"
 #include "output/ExodusCompare.hpp"
 
@@ -47,21 +48,8 @@ const std::vector<Case>& shippedCases() {
   return cases;
 }
 
-std::string tempPath(const std::string& stem) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string name = std::string("peridot_") + info->test_suite_name() + "_" + info->name() +
-                           "_" + std::to_string(::getpid()) + "_" + stem;
-  return (std::filesystem::temp_directory_path() / name).string();
-}
-
-struct TempFile {
-  explicit TempFile(std::string p) : path(std::move(p)) {}
-  ~TempFile() {
-    std::error_code ec;
-    std::filesystem::remove(path, ec);
-  }
-  std::string path;
-};
+using peridot::testing::TempFile;
+using peridot::testing::tempPath;
 
 template <class F>
 void expectInputError(F f, const std::vector<std::string>& parts) {

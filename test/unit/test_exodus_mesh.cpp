@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "TempFile.hpp"
 #include "core/Error.hpp"
 #include "discretization/ElementGeometry.hpp"
 #include "discretization/ExodusMeshReader.hpp"
@@ -34,22 +35,8 @@ const char* const kDeckPath = "Discretization -> Input Mesh File";
 constexpr double kUnitCube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 
-std::string tempPath(const std::string& stem) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string name = std::string("peridot_") + info->test_suite_name() + "_" + info->name() +
-                           "_" + std::to_string(::getpid()) + "_" + stem;
-  return (std::filesystem::temp_directory_path() / name).string();
-}
-
-// Removes a file at the end of a test.
-struct TempFile {
-  explicit TempFile(std::string p) : path(std::move(p)) {}
-  ~TempFile() {
-    std::error_code ec;
-    std::filesystem::remove(path, ec);
-  }
-  std::string path;
-};
+using peridot::testing::TempFile;
+using peridot::testing::tempPath;
 
 // Expects f() to throw InputError whose message contains every one of parts.
 template <class F>
