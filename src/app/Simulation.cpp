@@ -212,6 +212,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   evaluator_ = std::make_unique<ModelEvaluator>(topology_, *fields_, blocks_,
                                                 config_.discretization.influenceFunction, timers_);
   if (planar_) evaluator_->setPlanar(cloud_.thickness);
+  evaluator_->setPartialVolumes(config_.discretization.partialVolumes);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
 

@@ -1,5 +1,6 @@
 #include "discretization/Discretization.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <filesystem>
@@ -190,6 +191,7 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
     c.omitBondsBetweenBlocks = r.choice("Omit Bonds Between Blocks", {"None", "All"}) == "All";
   }
   c.influenceFunction = r.has("Influence Function") ? r.string("Influence Function") : "One";
+  c.partialVolumes = r.has("Partial Volumes") && r.boolean("Partial Volumes", false);
   {
     const auto& f = c.influenceFunction;
     if (f != "One" && f != "Parabolic Decay" && f != "Gaussian" && f != "Conical" &&
@@ -248,9 +250,30 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   if (r.has("Construct Neighborhood Lists") && !r.boolean("Construct Neighborhood Lists", true)) {
     throw InputError(r.pathOf("Construct Neighborhood Lists"), "false is not supported");
   }
-  for (const char* key : {"Compute Element-Horizon Intersections", "Construct Interfaces"}) {
-    if (r.has(key) && r.boolean(key, false)) {
-      throw InputError(r.pathOf(key), "not supported by Peridot yet");
+  if (r.has("Compute Element-Horizon Intersections") &&
+      r.boolean("Compute Element-Horizon Intersections", false)) {
+    throw InputError(r.pathOf("Compute Element-Horizon Intersections"),
+                     "Peridot does not intersect the mesh's elements with the horizon; "
+                     "`Partial Volumes: true` intersects each point's cubic cell (edge V^(1/3)) "
+                     "with it, which is the same for a uniform axis-aligned grid");
+  }
+  if (r.has("Construct Interfaces") && r.boolean("Construct Interfaces", false)) {
+    throw InputError(r.pathOf("Construct Interfaces"), "not supported by Peridot yet");
+  }
+  if (c.partialVolumes && c.generator != DiscretizationConfig::Generator::None &&
+      c.generator != DiscretizationConfig::Generator::Cylinder) {
+    // The cells of partial volumes are cubes (squares): a generator's spacings must agree.
+    const int axes = c.generator == DiscretizationConfig::Generator::TensorProduct2D ? 2 : 3;
+    double lo = 1e300, hi = 0;
+    for (int d = 0; d < axes; ++d) {
+      const double spacing = c.length[d] / static_cast<double>(c.numPoints[d]);
+      lo = std::min(lo, spacing);
+      hi = std::max(hi, spacing);
+    }
+    if (hi > lo * (1 + 1e-6)) {
+      throw InputError(r.pathOf("Partial Volumes"),
+                       "needs cubic cells (square in 2D), but the generator's spacings differ (" +
+                           std::to_string(lo) + " to " + std::to_string(hi) + ")");
     }
   }
   r.finish();
@@ -419,6 +442,10 @@ PointCloud buildPointCloud(const DiscretizationConfig& c) {
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& c) {
   NeighborhoodRule rule;
+  if (c.partialVolumes) {
+    rule.kind = NeighborhoodRule::Kind::CellOverlap;  // reach and dimension: buildTopology
+    return rule;
+  }
   if (c.type != "PdQuickGrid") return rule;
   if (c.spherical || c.generator == DiscretizationConfig::Generator::Cylinder) {
     rule.kind = NeighborhoodRule::Kind::SphereStrict;

@@ -37,10 +37,14 @@ struct PeriodicBox {
 // `NeighborhoodType: Spherical` it keeps |xi| < delta (strict). In 2D the sphere is a disk (all
 // points have z = 0) and the box a rectangle.
 struct NeighborhoodRule {
-  enum class Kind { SphereInclusive, SphereStrict, CellBox };
+  // CellOverlap (`Partial Volumes`): j is a neighbour when its cell overlaps the horizon ball
+  // (src/neighbor/PartialVolume.hpp); its bonds then carry the overlapping fraction.
+  enum class Kind { SphereInclusive, SphereStrict, CellBox, CellOverlap };
   Kind kind = Kind::SphereInclusive;
   double cellSize[3] = {0, 0, 0};  // CellBox: generator spacing per axis
   int cellCount[3] = {0, 0, 0};    // CellBox: number of cells per axis (caps n); 0: no such axis
+  double overlapReach = 0;         // CellOverlap: the largest half cell diagonal of the cloud
+  int dimension = 3;               // CellOverlap: cells are squares in 2D
 };
 
 struct DiscretizationConfig {
@@ -67,6 +71,8 @@ struct DiscretizationConfig {
   bool omitBondsBetweenBlocks = false;
   std::vector<BondFilter> bondFilters;
   std::string influenceFunction = "One";
+  // `Partial Volumes`: neighbours weighted by the part of their cell inside the horizon.
+  bool partialVolumes = false;
   std::string generatorPath;
   PeriodicBox periodic;  // bonds across periodic faces reach the images of the points
 };

@@ -7,6 +7,7 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "deck/Expression.hpp"
+#include "neighbor/PartialVolume.hpp"
 
 namespace peridot {
 
@@ -63,8 +64,9 @@ void ModelEvaluator::initialize() {
                                                   b.material->family() + " material does not");
     }
   }
-  if (influenceFunction_ != "One") {
+  if (influenceFunction_ != "One" || partialVolumes_) {
     std::vector<double>& omega = fields_.bond("Influence_Function");
+    const bool one = influenceFunction_ == "One";
     const std::int64_t* offsets = topology_.bondOffsets.data();
     const int* nb = topology_.neighbors.data();
     const bool parabolic = influenceFunction_ == "Parabolic Decay";
@@ -73,25 +75,30 @@ void ModelEvaluator::initialize() {
     const bool conical = influenceFunction_ == "Conical";
     const bool conicalOverZeta = influenceFunction_ == "Conical Over Zeta";
     std::unique_ptr<Expression> expr;
-    if (!parabolic && !gaussian && !conical && !conicalOverZeta) {
+    if (!one && !parabolic && !gaussian && !conical && !conicalOverZeta) {
       expr = std::make_unique<Expression>(influenceFunction_,
                                           std::vector<std::string>{"zeta", "horizon"},
                                           "Discretization -> Influence Function");
     }
+    CellFractionCache fractions;
     for (int i = 0; i < topology_.numOwned; ++i) {
       const double delta = state_.horizon[i];
       for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
         const int j = nb[b];
-        double z2 = 0;
+        double xi[3], z2 = 0;
         for (int d = 0; d < 3; ++d) {
-          const double X = state_.x[3 * j + d] - state_.x[3 * i + d];
-          z2 += X * X;
+          xi[d] = state_.x[3 * j + d] - state_.x[3 * i + d];
+          z2 += xi[d] * xi[d];
         }
-        const double zeta = std::sqrt(z2), r = zeta / delta;
-        if (parabolic) {
+        // With partial volumes a bond may reach past the horizon (its cell overlaps it): the
+        // part of the cell inside lies at zeta <= delta, so omega is taken there.
+        const double zeta = std::min(std::sqrt(z2), delta), r = zeta / delta;
+        if (one) {
+          omega[b] = 1.0;
+        } else if (parabolic) {
           omega[b] = r < 0.5 ? 1.0 : -4.0 * r * r + 4.0 * r;
         } else if (gaussian) {
-          omega[b] = std::exp(-z2 / (0.16 * delta * delta));
+          omega[b] = std::exp(-std::min(z2, delta * delta) / (0.16 * delta * delta));
         } else if (conical) {
           omega[b] = 1.0 - r;
         } else if (conicalOverZeta) {
@@ -104,6 +111,10 @@ void ModelEvaluator::initialize() {
                 "Discretization -> Influence Function",
                 "the expression gives a non-finite value at zeta = " + std::to_string(zeta));
           }
+        }
+        if (partialVolumes_) {
+          const double h = cellEdge(state_.volume[j], state_.dimension, state_.thickness);
+          omega[b] *= fractions.fraction(xi, h, delta, state_.dimension);
         }
       }
     }

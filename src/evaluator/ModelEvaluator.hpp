@@ -25,6 +25,9 @@ class ModelEvaluator {
   // Whether bond-based blocks with "Critical Stretch" check the stretch inside their force loop
   // (default) or in a separate damage pass; both give the same bits (bench_roofline measures).
   void setFuseCriticalStretch(bool fuse) { fuseCriticalStretch_ = fuse; }
+  // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
+  // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
+  void setPartialVolumes(bool partial) { partialVolumes_ = partial; }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();
@@ -49,6 +52,7 @@ class ModelEvaluator {
 
   float* bondDamage_ = nullptr;
   bool fuseCriticalStretch_ = true;
+  bool partialVolumes_ = false;
   std::vector<std::string> syncAfterPrecompute_;
 };
 

@@ -7,12 +7,12 @@
 // with c2 = c_i + c_j (each end's half of the pair constant; with kSides only the ends whose
 // horizon holds the bond), s the bond stretch, times (1 - bond damage) with kDamage, omega the
 // bond influence with kInfluence (else 1), and the block's bond law: F(s) = s, p(s) = s^2/2
-// (Linear) or DTT's smooth F and p (kSmooth). With kBreak the loop also applies the block's critical stretch (the
-// "Critical Stretch" damage model, fused: one pass over the bonds instead of two): a bond whose
-// stretch exceeds it gets bond damage 1 before its force is taken, computed exactly as the
-// separate damage loop computes it, so the same bonds break. The inner loop is a SIMD loop: the
-// per-point force sum runs in vector lanes (`omp simd reduction`), which fixes its order by the
-// bond list alone, so nodal results stay identical at any rank count.
+// (Linear) or DTT's smooth F and p (kSmooth). With kBreak the loop also applies the block's
+// critical stretch (the "Critical Stretch" damage model, fused: one pass over the bonds instead of
+// two): a bond whose stretch exceeds it gets bond damage 1 before its force is taken, computed
+// exactly as the separate damage loop computes it, so the same bonds break. The inner loop is a
+// SIMD loop: the per-point force sum runs in vector lanes (`omp simd reduction`), which fixes its
+// order by the bond list alone, so nodal results stay identical at any rank count.
 #include <cmath>
 #include <vector>
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "neighbor/PartialVolume.hpp"
+
 namespace peridot {
 
 namespace {
@@ -17,6 +19,7 @@ int boxCells(const NeighborhoodRule& rule, int d, double horizon) {
 }  // namespace
 
 double searchReach(const NeighborhoodRule& rule, double horizon) {
+  if (rule.kind == NeighborhoodRule::Kind::CellOverlap) return horizon + rule.overlapReach;
   if (rule.kind != NeighborhoodRule::Kind::CellBox) return horizon;
   double r2 = 0;
   for (int d = 0; d < 3; ++d) {
@@ -85,6 +88,7 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
 
   const bool box = in.rule.kind == NeighborhoodRule::Kind::CellBox;
   const bool strict = in.rule.kind == NeighborhoodRule::Kind::SphereStrict;
+  const bool overlap = in.rule.kind == NeighborhoodRule::Kind::CellOverlap;
   const bool filtered = in.bondFilters && !in.bondFilters->empty();
   for (std::size_t q : queries) {
     const double* xq = in.x + 3 * q;
@@ -116,6 +120,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
             if (box) {
               inside = std::fabs(dx) < halfBox[0] && std::fabs(dy) < halfBox[1] &&
                        std::fabs(dz) < halfBox[2];
+            } else if (overlap) {
+              const double xi[3] = {dx, dy, dz};
+              inside = cellOverlapsHorizon(xi, in.cellEdge[j], h, in.rule.dimension);
             } else {
               const double d2 = dx * dx + dy * dy + dz * dz;
               const double hj2 =

@@ -18,6 +18,7 @@ struct NeighborSearchInput {
   // Sphere rules: keep j if it is within the query's horizon or the query within j's (so that
   // lists are symmetric when horizons differ).
   bool unionOfHorizons = false;
+  const double* cellEdge = nullptr;  // CellOverlap: per candidate
 };
 
 // For each query (an index into the candidates), appends the indices of its neighbours (self

@@ -7,7 +7,9 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "core/Error.hpp"
 #include "neighbor/NeighborSearch.hpp"
+#include "neighbor/PartialVolume.hpp"
 #include "parallel/Partition.hpp"
 
 namespace peridot {
@@ -96,12 +98,15 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   }
   std::vector<double> ch(candidates.size());
   std::vector<int> cb(candidates.size());
+  const bool overlap = opt.rule.kind == NeighborhoodRule::Kind::CellOverlap;
+  std::vector<double> ce(overlap ? candidates.size() : 0);
   std::unordered_map<std::size_t, std::size_t> candidateOf;
   candidateOf.reserve(out.owned.size() * 2);
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const std::size_t i = indexOf(candidates[k]);
     ch[k] = horizon[i];
     cb[k] = cloud.blockId[i];
+    if (overlap) ce[k] = cellEdge(cloud.volume[i], cloud.dimension, cloud.thickness);
     if (owner[i] == rank && codeOf(candidates[k]) == kNoShift) candidateOf[i] = k;
   }
   std::vector<std::size_t> queries;
@@ -116,6 +121,7 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
   in.unionOfHorizons = unionOfHorizons;
+  in.cellEdge = overlap ? ce.data() : nullptr;
   // Candidate indices become packed keys in place: one 8-byte word per bond at the peak.
   findNeighbors(in, queries, out.offsets, out.neighbors);
   for (auto& k : out.neighbors) k = candidates[k];
@@ -125,7 +131,23 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
 }  // namespace
 
 Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
-                       const TopologyOptions& opt, MPI_Comm comm) {
+                       const TopologyOptions& options, MPI_Comm comm) {
+  TopologyOptions opt = options;
+  if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap) {
+    // Partial volumes: the search reaches half a cell diagonal beyond the horizon.
+    if (std::adjacent_find(horizon.begin(), horizon.end(), std::not_equal_to<double>()) !=
+        horizon.end()) {
+      throw InputError("Discretization -> Partial Volumes",
+                       "needs one horizon for every point (the blocks' horizons differ)");
+    }
+    opt.rule.dimension = cloud.dimension;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      opt.rule.overlapReach =
+          std::max(opt.rule.overlapReach,
+                   cellOverlapReach(cellEdge(cloud.volume[i], cloud.dimension, cloud.thickness),
+                                    cloud.dimension));
+    }
+  }
   Topology t;
   t.comm = comm;
   MPI_Comm_rank(comm, &t.rank);

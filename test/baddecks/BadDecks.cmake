@@ -255,3 +255,10 @@ peridot_baddeck(planar_periodic_z DECK planar_periodic_z.yaml
   EXPECT [[Discretization -> Periodic Z: a 2D discretization has no z extent to repeat]])
 peridot_baddeck(planar_dimension_pdquickgrid DECK planar_dimension_pdquickgrid.yaml
   EXPECT [[Discretization -> Dimension: only for Text File discretizations]])
+peridot_baddeck(pv_spacings DECK pv_spacings.yaml
+  EXPECT [[Discretization -> Partial Volumes: needs cubic cells (square in 2D), but the generator's spacings differ]])
+peridot_baddeck(pv_horizons DECK pv_horizons.yaml
+  EXPECT [[Discretization -> Partial Volumes: needs one horizon for every point]])
+peridot_baddeck(pv_element_horizon DECK pv_element_horizon.yaml
+  EXPECT [[Discretization -> Compute Element-Horizon Intersections: Peridot does not intersect the mesh's elements]]
+  ALSO [[`Partial Volumes: true`]])

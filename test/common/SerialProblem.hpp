@@ -1,7 +1,7 @@
 #pragma once
 // A serial problem for kernel tests: points (unit volume unless given), one block, a model
-// evaluator; optionally periodic, with an influence function, or planar (thickness > 0: the
-// points must lie in z = 0 and their volumes include the thickness).
+// evaluator; optionally periodic, with an influence function, planar (thickness > 0: the
+// points must lie in z = 0 and their volumes include the thickness), or with partial volumes.
 #include <array>
 #include <memory>
 #include <string>
@@ -24,7 +24,8 @@ struct Problem {
   Problem(const std::vector<std::array<double, 3>>& points, double horizon,
           std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage = nullptr,
           const PeriodicBox& periodic = PeriodicBox(), double volume = 1.0,
-          const std::string& influenceFunction = "One", double planarThickness = 0.0) {
+          const std::string& influenceFunction = "One", double planarThickness = 0.0,
+          bool partialVolumes = false) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       cloud.x.insert(cloud.x.end(), points[i].begin(), points[i].end());
       cloud.volume.push_back(volume);
@@ -39,6 +40,7 @@ struct Problem {
     std::vector<double> h(points.size(), horizon);
     TopologyOptions options;
     options.periodic = periodic;
+    if (partialVolumes) options.rule.kind = NeighborhoodRule::Kind::CellOverlap;
     topology = buildTopology(cloud, h, options, MPI_COMM_SELF);
     fields = std::make_unique<FieldManager>(topology);
     double* x = fields->node("Model_Coordinates", 3);
@@ -63,6 +65,7 @@ struct Problem {
     evaluator =
         std::make_unique<ModelEvaluator>(topology, *fields, blocks, influenceFunction, timers);
     if (planarThickness > 0) evaluator->setPlanar(planarThickness);
+    evaluator->setPartialVolumes(partialVolumes);
     evaluator->initialize();
   }
   // Local index of the point with global id g.

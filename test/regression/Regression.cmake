@@ -56,6 +56,9 @@ if(EXISTS "${PERIDOT_CASES_DIR}")
 endif()
 peridot_identical(DamageCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube DamageCube.yaml
                   DamageCube.e exact.comp 10000)
+# Partial volumes (bond weights from cell-horizon overlaps, PMB + damage): bitwise equal too.
+peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PartialVolumes
+                  PartialVolumes.yaml PartialVolumes.e exact.comp 10000)
 # A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
                   Plate2D.e exact_2d.comp 600)

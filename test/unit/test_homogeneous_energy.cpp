@@ -68,9 +68,9 @@ double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const
 // it is measured +11% for simple shear along the axes and -16.5% for shear at 45 degrees to
 // them (the same at every Poisson's ratio: shear has no dilatation, only G enters); at
 // 8.015 dx the axis-aligned error is still +1.2%. Peridigm's shear correction factor makes
-// axis-aligned shear exact but the 45-degree case worse (-25%). The 1% target for shear is
-// therefore not met on coarse cubic lattices; the figures are printed and the asserted facts
-// are the exact ones.
+// axis-aligned shear exact but the 45-degree case worse (-25%). With the centre-inside rule the
+// 1% target for shear is therefore not met on coarse cubic lattices; the figures are printed
+// and the asserted facts are the exact ones. Partial volumes meet it: test_partial_volumes.cpp.
 TEST(HomogeneousEnergy, LPSDilatationAndShear) {
   const double s = 1e-4, g = 1e-4, E = 1.0;
   const double dil[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
