@@ -30,6 +30,7 @@ REPO = os.path.dirname(HERE)
 DENSITY = 2200.0
 BULK = 14.9e9
 SHEAR = 8.94e9
+YOUNG = 9.0 * BULK * SHEAR / (3.0 * BULK + SHEAR)  # the 2D plate's E (plane stress PMB: nu = 1/3)
 HORIZON_FACTOR = 3.015  # delta = 3.015 dx
 
 
@@ -48,6 +49,11 @@ class Scene:
         self.skin = a.skin * a.dx
         self.influence = a.lps_influence   # "inverse" (1/|xi|, as LAMMPS) or "one"
         self.micromodulus = 18.0 * BULK / (math.pi * self.delta ** 4)
+        self.planar = model == "plate2d"  # N x N points, plane stress, thickness dx
+
+    @property
+    def num_points(self):
+        return self.n ** 2 if self.planar else self.n ** 3
 
     @property
     def name(self):
@@ -56,6 +62,8 @@ class Scene:
     # Peridot's own stable time-step estimate for an interior point (Silling & Askari, PMB
     # micromodulus from K), reproduced here so the harness can warn before running.
     def stable_dt(self):
+        if self.planar:
+            return float("inf")  # Peridot prints its own estimate; the 3D sum does not apply
         s = 0.0
         r = int(math.ceil(HORIZON_FACTOR))
         for i in range(-r, r + 1):
@@ -70,11 +78,19 @@ class Scene:
         nodes = os.path.join(d, "all_nodes.txt")
         if not os.path.exists(nodes):
             with open(nodes, "w") as f:
-                total = self.n ** 3
+                total = self.num_points
                 for start in range(1, total + 1, 16):
                     f.write(" ".join(str(k) for k in range(start, min(start + 16, total + 1))))
                     f.write("\n")
-        if self.model == "pmb":
+        if self.model == "plate2d":
+            material = """    <ParameterList name="Glass">
+      <Parameter name="Material Model" type="string" value="Elastic Bond Based"/>
+      <Parameter name="Plane Stress" type="bool" value="true"/>
+      <Parameter name="Density" type="double" value="%r"/>
+      <Parameter name="Young's Modulus" type="double" value="%r"/>
+    </ParameterList>""" % (DENSITY, YOUNG)
+            influence = ""
+        elif self.model == "pmb":
             material = """    <ParameterList name="Glass">
       <Parameter name="Material Model" type="string" value="Elastic Bond Based"/>
       <Parameter name="Density" type="double" value="%r"/>
@@ -91,21 +107,11 @@ class Scene:
             influence = ('    <Parameter name="Influence Function" type="string" value="1.0/zeta"/>\n'
                          if self.influence == "inverse" else "")
         deck = """<ParameterList>
-  <!-- bench/run_bench.py: %(name)s. PMB/LPS cube, N^3 points, delta = %(hf)s dx, critical
+  <!-- bench/run_bench.py: %(name)s. %(what)s, delta = %(hf)s dx, critical
        stretch, initial velocity v_x = rate (x - xc) that stretches it until bonds break. -->
   <ParameterList name="Discretization">
     <Parameter name="Type" type="string" value="PdQuickGrid"/>
-    <ParameterList name="TensorProduct3DMeshGenerator">
-      <Parameter name="X Origin" type="double" value="0.0"/>
-      <Parameter name="Y Origin" type="double" value="0.0"/>
-      <Parameter name="Z Origin" type="double" value="0.0"/>
-      <Parameter name="X Length" type="double" value="%(L)r"/>
-      <Parameter name="Y Length" type="double" value="%(L)r"/>
-      <Parameter name="Z Length" type="double" value="%(L)r"/>
-      <Parameter name="Number Points X" type="int" value="%(n)d"/>
-      <Parameter name="Number Points Y" type="int" value="%(n)d"/>
-      <Parameter name="Number Points Z" type="int" value="%(n)d"/>
-    </ParameterList>
+%(generator)s
     <Parameter name="NeighborhoodType" type="string" value="Spherical"/>
 %(influence)s  </ParameterList>
   <ParameterList name="Materials">
@@ -159,7 +165,8 @@ class Scene:
     </ParameterList>
   </ParameterList>
 </ParameterList>
-""" % dict(name=self.name, hf=HORIZON_FACTOR, L=self.length, n=self.n, influence=influence,
+""" % dict(name=self.name, hf=HORIZON_FACTOR, generator=self.generator(), influence=influence,
+           what=("plane-stress PMB plate, N^2 points" if self.planar else "PMB/LPS cube, N^3 points"),
            material=material, sc=self.sc, delta=self.delta, rate=self.rate, xc=self.center,
            tfinal=self.steps * self.dt, dt=self.dt, steps=self.steps)
         path = os.path.join(d, "peridot.xml")
@@ -167,7 +174,22 @@ class Scene:
             f.write(deck)
         return path
 
+    def generator(self):
+        axes = "XY" if self.planar else "XYZ"
+        lines = ['    <ParameterList name="TensorProduct%dDMeshGenerator">' % len(axes)]
+        lines += ['      <Parameter name="%s Origin" type="double" value="0.0"/>' % a for a in axes]
+        lines += ['      <Parameter name="%s Length" type="double" value="%r"/>' % (a, self.length)
+                  for a in axes]
+        lines += ['      <Parameter name="Number Points %s" type="int" value="%d"/>' % (a, self.n)
+                  for a in axes]
+        lines.append("    </ParameterList>")
+        if self.planar:
+            lines.append('    <Parameter name="Thickness" type="double" value="%r"/>' % self.dx)
+        return "\n".join(lines)
+
     def write_lammps(self, d):
+        if self.planar:
+            return None  # LAMMPS PERI has no 2D (plane stress / strain) model
         if self.model == "pmb":
             pair = "pair_style      peri/pmb\npair_coeff      * * %r %r %r 0.0" % (
                 self.micromodulus, self.delta, self.sc)
@@ -492,7 +514,9 @@ BASELINE_N = 6
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--sizes", type=int, nargs="+", default=[32, 64])
-    ap.add_argument("--models", nargs="+", choices=["pmb", "lps"], default=["pmb", "lps"])
+    ap.add_argument("--models", nargs="+", choices=["pmb", "lps", "plate2d"], default=["pmb", "lps"],
+                    help="plate2d: an N x N glass plate, plane-stress PMB + critical stretch, "
+                    "Peridot only (LAMMPS PERI has no 2D model)")
     ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--steps", type=int, default=200)
@@ -600,9 +624,10 @@ def main():
             d = os.path.join(a.workdir, sc.name)
             os.makedirs(d, exist_ok=True)
             sc.write_peridot(d)
-            sc.write_lammps(d)
+            lammps_input = sc.write_lammps(d)
             if a.write_only:
-                print("wrote %s/peridot.xml and %s/in.lammps" % (d, d))
+                print("wrote %s/peridot.xml" % d + (" and %s/in.lammps" % d if lammps_input else
+                                                   " (no LAMMPS twin: LAMMPS PERI is 3D only)"))
                 continue
             est = sc.stable_dt()
             if a.dt > est:
@@ -610,6 +635,8 @@ def main():
             for rep in range(a.repeats):
                 for p in a.ranks:
                     for code in a.codes:  # alternate the codes within each repeat
+                        if code == "lammps" and sc.planar:
+                            continue
                         meta = dict(code=code, n=n, model=model, np=p, rep=rep,
                                     steps_requested=a.steps, dt=a.dt, strain_rate=a.strain_rate,
                                     critical_stretch=a.critical_stretch, skin_dx=a.skin,
@@ -628,6 +655,9 @@ def main():
                             r2["tag"] = "%s_a%d" % (tag, attempt)
                             r = r2 if r2["foreign_frac"] < r["foreign_frac"] else r
                         r.update(meta)
+                        if r.get("stable_dt") and r["stable_dt"] < a.dt:
+                            print("warning: dt %g exceeds Peridot's stable estimate %g" %
+                                  (a.dt, r["stable_dt"]), flush=True)
                         r["date"] = time.strftime("%Y-%m-%d %H:%M:%S")
                         store["results"].append(r)
                         save()
