@@ -91,14 +91,16 @@ void ModelEvaluator::initialize() {
           z2 += xi[d] * xi[d];
         }
         // With partial volumes a bond may reach past the horizon (its cell overlaps it): the
-        // part of the cell inside lies at zeta <= delta, so omega is taken there.
-        const double zeta = std::min(std::sqrt(z2), delta), r = zeta / delta;
+        // part of the cell inside lies at zeta <= delta, so omega is taken there. (Without them
+        // Peridigm's box neighbourhood also has bonds past delta; those keep omega(zeta).)
+        const double z2At = partialVolumes_ ? std::min(z2, delta * delta) : z2;
+        const double zeta = std::sqrt(z2At), r = zeta / delta;
         if (one) {
           omega[b] = 1.0;
         } else if (parabolic) {
           omega[b] = r < 0.5 ? 1.0 : -4.0 * r * r + 4.0 * r;
         } else if (gaussian) {
-          omega[b] = std::exp(-std::min(z2, delta * delta) / (0.16 * delta * delta));
+          omega[b] = std::exp(-z2At / (0.16 * delta * delta));
         } else if (conical) {
           omega[b] = 1.0 - r;
         } else if (conicalOverZeta) {
