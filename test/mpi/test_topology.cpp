@@ -74,6 +74,46 @@ TEST(Topology, NeighbourListsMatchBruteForce) {
   expectListsMatch(cloud, h, {});
 }
 
+// Partial volumes: j is listed when its cube (edge V_j^(1/3), volumes differ here) overlaps the
+// ball of radius h around i; brute force over the whole cloud with the same rule written out.
+TEST(Topology, CellOverlapListsMatchBruteForce) {
+  PointCloud cloud = randomCloud(1500, 5);
+  for (std::size_t i = 0; i < cloud.size(); ++i) cloud.volume[i] = i % 3 == 0 ? 8e-3 : 1e-3;
+  std::vector<double> h(cloud.size(), 0.08);
+  TopologyOptions options;
+  options.rule.kind = NeighborhoodRule::Kind::CellOverlap;
+  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  std::map<long long, std::vector<long long>> expected;
+  long long bonds = 0, beyond = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    auto& list = expected[cloud.globalId[i]];
+    for (std::size_t j = 0; j < cloud.size(); ++j) {
+      if (i == j) continue;
+      const double half = 0.5 * std::cbrt(cloud.volume[j]);
+      double nearest2 = 0, d2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double dx = cloud.x[3 * j + d] - cloud.x[3 * i + d];
+        nearest2 += std::pow(std::max(std::fabs(dx) - half, 0.0), 2);
+        d2 += dx * dx;
+      }
+      if (nearest2 < h[i] * h[i]) {
+        list.push_back(cloud.globalId[j]);
+        beyond += d2 > h[i] * h[i];
+      }
+    }
+    std::sort(list.begin(), list.end());
+    bonds += static_cast<long long>(list.size());
+  }
+  EXPECT_GT(beyond, 0);  // the rule reaches past the horizon
+  EXPECT_EQ(t.globalNumBonds, bonds);
+  for (int i = 0; i < t.numOwned; ++i) {
+    std::vector<long long> got;
+    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+      got.push_back(t.overlapGlobalId[t.neighbors[b]]);
+    EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+  }
+}
+
 TEST(Topology, VariableHorizonListsAreUnionsWithSides) {
   // Differing horizons: j is listed by i if either horizon holds the bond; bit 0 of the bond's
   // sides says whether i's does, bit 1 whether j's does.
