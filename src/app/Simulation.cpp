@@ -250,6 +250,20 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                                                    volume_, timers_);
   }
   checkVariables();
+  RunVariables::Sources sources;
+  sources.config = &config_;
+  sources.comm = comm_;
+  sources.rank = rank_;
+  sources.topology = &topology_;
+  sources.fields = fields_.get();
+  sources.blocks = &blocks_;
+  sources.evaluator = evaluator_.get();
+  sources.nodeSets = &nodeSets_;
+  sources.density = &density_;
+  sources.blockIndexOfPoint = &blockIndexOfPoint_;
+  sources.externalForceDensity = b_;
+  sources.contactForceDensity = fc_;
+  variables_ = std::make_unique<RunVariables>(sources);
 
   // Initial conditions now, so that a bad value stops the run before any file is written.
   time_ = config_.solver.initialTime;
@@ -306,8 +320,8 @@ void Simulation::checkDimension() {
 }
 
 void Simulation::openOutputs() {
-  outputs_ =
-      std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *this, timers_);
+  outputs_ = std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *variables_,
+                                             timers_);
 }
 
 Simulation::~Simulation() = default;
@@ -332,135 +346,6 @@ void Simulation::checkVariables() {
       throw InputError(c.path + " -> Node Set", "unknown node set \"" + c.region + "\"");
     }
   }
-}
-
-int Simulation::components(const std::string& name) const {
-  if (const VariableInfo* v = findOutputVariable(name)) return v->components;
-  return 0;  // a compute's label: global
-}
-
-int Simulation::globalSize(const std::string& name) const {
-  for (const auto& c : config_.computes)
-    if (c.label == name) return components(c.variable) == 3 ? 3 : 1;
-  return 1;
-}
-
-void Simulation::nodeVariable(const std::string& name, std::vector<double>& out) {
-  const int n = topology_.numOwned;
-  const int c = components(name);
-  out.assign(static_cast<std::size_t>(n) * c, 0.0);
-  auto copy = [&](const double* src) {
-    std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin());
-  };
-  if (name == "Volume") {
-    copy(volume_);
-  } else if (name == "Horizon") {
-    copy(fields_->node("Horizon", 1));
-  } else if (name == "Block_Id") {
-    for (int i = 0; i < n; ++i) out[i] = blocks_[blockIndexOfPoint_[i]].id;
-  } else if (name == "Element_Id") {
-    for (int i = 0; i < n; ++i) out[i] = static_cast<double>(topology_.overlapGlobalId[i] + 1);
-  } else if (name == "Proc_Num") {
-    for (int i = 0; i < n; ++i) out[i] = rank_;
-  } else if (name == "Number_Of_Neighbors") {
-    for (int i = 0; i < n; ++i) {
-      int count = 0;
-      for (auto b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
-        count += topology_.ownSide(b) ? 1 : 0;
-      out[i] = count;
-    }
-  } else if (name == "Model_Coordinates") {
-    copy(x_);
-  } else if (name == "Coordinates") {
-    copy(y_);
-  } else if (name == "Displacement") {
-    copy(u_);
-  } else if (name == "Velocity") {
-    copy(v_);
-  } else if (name == "Acceleration") {
-    copy(a_);
-  } else if (name == "Force_Density") {
-    copy(f_);
-  } else if (name == "Force") {
-    for (int i = 0; i < n; ++i)
-      for (int d = 0; d < 3; ++d) out[3 * i + d] = f_[3 * i + d] * volume_[i];
-  } else if (name == "External_Force_Density") {
-    if (b_) copy(b_);
-  } else if (name == "Contact_Force_Density") {
-    if (fc_) copy(fc_);
-  } else if (name == "Damage") {
-    evaluator_->nodeDamage(out.data());
-  } else if (name == "Dilatation" || name == "Weighted_Volume") {
-    copy(fields_->node(name, 1));
-  } else if (name == "Kinetic_Energy") {
-    for (int i = 0; i < n; ++i) {
-      const double v2 =
-          v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
-      out[i] = 0.5 * density_[i] * volume_[i] * v2;
-    }
-  } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density") {
-    std::vector<double> w(topology_.numOverlap, 0.0);
-    evaluator_->storedEnergyDensity(w.data());
-    const bool perVolume = name == "Stored_Elastic_Energy_Density";
-    for (int i = 0; i < n; ++i) out[i] = perVolume ? w[i] : w[i] * volume_[i];
-  } else {
-    throw std::logic_error("no node variable " + name);
-  }
-}
-
-double Simulation::sumOver(const std::vector<int>* points, const std::string& variable,
-                           int component, const std::string& calculation) {
-  std::vector<double> values;
-  nodeVariable(variable, values);
-  const int c = components(variable);
-  double result = calculation == "Sum"       ? 0.0
-                  : calculation == "Minimum" ? std::numeric_limits<double>::max()
-                                             : std::numeric_limits<double>::lowest();
-  auto take = [&](int i) {
-    const double v = values[static_cast<std::size_t>(i) * c + component];
-    if (calculation == "Sum") {
-      result += v;
-    } else if (calculation == "Minimum") {
-      result = std::min(result, v);
-    } else {
-      result = std::max(result, v);
-    }
-  };
-  if (points) {
-    for (int i : *points) take(i);
-  } else {
-    for (int i = 0; i < topology_.numOwned; ++i) take(i);
-  }
-  double global = 0;
-  MPI_Op op = calculation == "Sum" ? MPI_SUM : calculation == "Minimum" ? MPI_MIN : MPI_MAX;
-  MPI_Allreduce(&result, &global, 1, MPI_DOUBLE, op, comm_);
-  return global;
-}
-
-void Simulation::globalVariable(const std::string& name, std::vector<double>& values) {
-  values.clear();
-  if (name == "Global_Kinetic_Energy") {
-    values.push_back(sumOver(nullptr, "Kinetic_Energy", 0, "Sum"));
-    return;
-  }
-  if (name == "Global_Stored_Elastic_Energy") {
-    values.push_back(sumOver(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
-    return;
-  }
-  for (const auto& c : config_.computes) {
-    if (c.label != name) continue;
-    const std::vector<int>* points = nullptr;
-    if (c.computeClass == "Block_Data") {
-      for (const auto& b : blocks_)
-        if (b.name == c.region) points = &b.points;
-    } else {
-      points = &nodeSets_.at(c.region);
-    }
-    const int n = components(c.variable);
-    for (int d = 0; d < n; ++d) values.push_back(sumOver(points, c.variable, d, c.calculation));
-    return;
-  }
-  throw std::logic_error("no global variable " + name);
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/RunVariables.hpp"
 #include "bc/Conditions.hpp"
 #include "contact/ShortRangeContact.hpp"
 #include "core/Timers.hpp"
@@ -20,11 +21,11 @@
 
 namespace peridot {
 
-class Simulation : public VariableSource {
+class Simulation {
  public:
   // Collective. Throws InputError for anything wrong with the deck or its mesh.
   Simulation(RunConfig config, MPI_Comm comm, std::ostream& log);
-  ~Simulation() override;
+  ~Simulation();
 
   // Runs the Verlet solver to the final time, writing the outputs. Collective.
   void run();
@@ -33,11 +34,8 @@ class Simulation : public VariableSource {
     observer_ = std::move(observer);
   }
 
-  // VariableSource
-  void nodeVariable(const std::string& name, std::vector<double>& ownedValues) override;
-  void globalVariable(const std::string& name, std::vector<double>& values) override;
-  int components(const std::string& name) const override;
-  int globalSize(const std::string& name) const override;
+  // The run's output variables (node and global, by Peridigm's names).
+  RunVariables& variables() { return *variables_; }
 
   const Topology& topology() const { return topology_; }
   // Collective: field and bond-list memory and peak resident memory, summed over ranks.
@@ -56,8 +54,6 @@ class Simulation : public VariableSource {
   void computeAcceleration();
   void evaluateForces(long long step);
   void checkFinite(long long step, double time);
-  double sumOver(const std::vector<int>* points, const std::string& variable, int component,
-                 const std::string& calculation);
 
   RunConfig config_;
   MPI_Comm comm_;
@@ -73,6 +69,7 @@ class Simulation : public VariableSource {
   std::map<std::string, std::vector<long long>> nodeSetIds_;
   std::map<std::string, std::vector<int>> nodeSets_;  // owned local indices
   std::unique_ptr<BoundaryConditions> conditions_;
+  std::unique_ptr<RunVariables> variables_;
   std::unique_ptr<OutputManager> outputs_;
   std::unique_ptr<ShortRangeContact> contact_;
   std::vector<double> density_;         // owned

@@ -51,21 +51,21 @@ TEST(Computes, BlockAndNodeSetReductions) {
               compute("MinVy", "Node_Set_Data", "Minimum", "Corner Node Set", "Velocity") +
               compute("Neighbours", "Block_Data", "Maximum", "block_1", "Number_Of_Neighbors"));
   std::vector<double> g;
-  sim->globalVariable("TotalVolume", g);
+  sim->variables().globalVariable("TotalVolume", g);
   ASSERT_EQ(g.size(), 1u);
   EXPECT_DOUBLE_EQ(g[0], 64.0);
   // Corner set: points 1, 2, 5, 64 at (0.5,0.5,0.5), (1.5,0.5,0.5), (0.5,1.5,0.5), (3.5,3.5,3.5):
   // v_y = x + 10 z = 5.5, 6.5, 5.5, 38.5.
-  sim->globalVariable("MaxVy", g);
+  sim->variables().globalVariable("MaxVy", g);
   ASSERT_EQ(g.size(), 3u);
   EXPECT_DOUBLE_EQ(g[1], 38.5);
   EXPECT_DOUBLE_EQ(g[0], 0.0);
-  sim->globalVariable("MinVy", g);
+  sim->variables().globalVariable("MinVy", g);
   EXPECT_DOUBLE_EQ(g[1], 5.5);
   // Horizon 2.1 on the 4^3 unit grid: the best-placed points ((1,1,1)-like) reach offsets -1..2
   // per axis; of those 63 points, 29 have |xi|^2 <= 4.41 (enumerated by hand: 6 at 1, 12 at 2,
   // 8 at 3, 3 at 4).
-  sim->globalVariable("Neighbours", g);
+  sim->variables().globalVariable("Neighbours", g);
   EXPECT_DOUBLE_EQ(g[0], 29.0);
 }
 
@@ -105,7 +105,7 @@ TEST(Computes, InfluenceFunctionsScaleTheWeightedVolume) {
         build("    Influence Function: \"" + c.deckValue + "\"\n",
               compute("MinM", "Node_Set_Data", "Minimum", "Corner Node Set", "Weighted_Volume"));
     std::vector<double> m;
-    sim->globalVariable("MinM", m);
+    sim->variables().globalVariable("MinM", m);
     // The corners (points 1 and 64) have the smallest neighbourhoods in the set.
     EXPECT_NEAR(m[0], c.m, 1e-12 * c.m) << c.deckValue;
   }
@@ -141,7 +141,7 @@ TEST(Computes, TractionGivesSigmaTimesAreaInTotal) {
   Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
   sim.run();
   std::vector<double> g;
-  sim.globalVariable("TopForceDensity", g);
+  sim.variables().globalVariable("TopForceDensity", g);
   // 16 points of volume 4*4*2/64 = 0.5: total force = sum(b) * 0.5 = sigma * A = 40.
   EXPECT_NEAR(g[2] * 0.5, 2.5 * 16.0, 1e-12);
   EXPECT_EQ(g[0], 0.0);

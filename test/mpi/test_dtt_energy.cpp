@@ -146,9 +146,9 @@ Energies energies(Simulation& sim, MPI_Comm comm) {
   e.work = global[0];
   e.accelerationTerm = global[1];
   std::vector<double> g;
-  sim.globalVariable("Global_Stored_Elastic_Energy", g);
+  sim.variables().globalVariable("Global_Stored_Elastic_Energy", g);
   e.stored = g[0];
-  sim.globalVariable("Global_Kinetic_Energy", g);
+  sim.variables().globalVariable("Global_Kinetic_Energy", g);
   e.kinetic = g[0];
   return e;
 }
@@ -188,8 +188,8 @@ std::map<std::pair<long long, long long>, double> bondDamages(Simulation& sim, M
 // Displacement (3) and damage of every point by global id, gathered on every rank.
 std::map<long long, std::vector<double>> gatherNodal(Simulation& sim, MPI_Comm comm) {
   std::vector<double> u, d, mine;
-  sim.nodeVariable("Displacement", u);
-  sim.nodeVariable("Damage", d);
+  sim.variables().nodeVariable("Displacement", u);
+  sim.variables().nodeVariable("Damage", d);
   const Topology& t = sim.topology();
   for (int i = 0; i < t.numOwned; ++i)
     mine.insert(mine.end(), {static_cast<double>(t.overlapGlobalId[i]), u[3 * i], u[3 * i + 1],

@@ -103,9 +103,9 @@ Totals totals(Simulation& sim) {
     out.angular[d] = global[3 + d];
   }
   std::vector<double> g;
-  sim.globalVariable("Global_Kinetic_Energy", g);
+  sim.variables().globalVariable("Global_Kinetic_Energy", g);
   out.kinetic = g[0];
-  sim.globalVariable("Global_Stored_Elastic_Energy", g);
+  sim.variables().globalVariable("Global_Stored_Elastic_Energy", g);
   out.stored = g[0];
   return out;
 }
@@ -231,11 +231,11 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   double brokenAt = -1, vAtBreak = 0;
   sim->setStepObserver([&](long long, double t) {
     std::vector<double> d;
-    sim->nodeVariable("Damage", d);
+    sim->variables().nodeVariable("Damage", d);
     double local = d.empty() ? 0.0 : d[0], maxDamage = 0;
     MPI_Allreduce(&local, &maxDamage, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     std::vector<double> v;
-    sim->nodeVariable("Velocity", v);
+    sim->variables().nodeVariable("Velocity", v);
     double speed = 0, s = v.empty() ? 0.0 : std::fabs(v[0]);
     MPI_Allreduce(&s, &speed, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     if (maxDamage == 1.0 && brokenAt < 0) {
@@ -249,7 +249,7 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   sim->run();
   ASSERT_GT(brokenAt, 0.0);
   std::vector<double> u;
-  sim->nodeVariable("Displacement", u);
+  sim->variables().nodeVariable("Displacement", u);
   for (double c : u) EXPECT_TRUE(std::isfinite(c));
   if (rank == 0) std::remove("two_points.txt");
 }

@@ -1,0 +1,150 @@
+#include "app/RunVariables.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "deck/RunConfig.hpp"
+
+namespace peridot {
+
+RunVariables::RunVariables(const Sources& sources)
+    : s_(sources),
+      x_(sources.fields->node("Model_Coordinates", 3)),
+      y_(sources.fields->node("Coordinates", 3)),
+      u_(sources.fields->node("Displacement", 3)),
+      v_(sources.fields->node("Velocity", 3)),
+      a_(sources.fields->node("Acceleration", 3)),
+      f_(sources.fields->node("Force_Density", 3)),
+      volume_(sources.fields->node("Volume", 1)) {}
+
+int RunVariables::components(const std::string& name) const {
+  if (const VariableInfo* v = findOutputVariable(name)) return v->components;
+  return 0;  // a compute's label: global
+}
+
+int RunVariables::globalSize(const std::string& name) const {
+  for (const auto& c : s_.config->computes)
+    if (c.label == name) return components(c.variable) == 3 ? 3 : 1;
+  return 1;
+}
+
+void RunVariables::nodeVariable(const std::string& name, std::vector<double>& out) {
+  const int n = s_.topology->numOwned;
+  const int c = components(name);
+  out.assign(static_cast<std::size_t>(n) * c, 0.0);
+  auto copy = [&](const double* src) {
+    std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin());
+  };
+  if (name == "Volume") {
+    copy(volume_);
+  } else if (name == "Horizon") {
+    copy(s_.fields->node("Horizon", 1));
+  } else if (name == "Block_Id") {
+    for (int i = 0; i < n; ++i) out[i] = (*s_.blocks)[(*s_.blockIndexOfPoint)[i]].id;
+  } else if (name == "Element_Id") {
+    for (int i = 0; i < n; ++i) out[i] = static_cast<double>(s_.topology->overlapGlobalId[i] + 1);
+  } else if (name == "Proc_Num") {
+    for (int i = 0; i < n; ++i) out[i] = s_.rank;
+  } else if (name == "Number_Of_Neighbors") {
+    for (int i = 0; i < n; ++i) {
+      int count = 0;
+      for (auto b = s_.topology->bondOffsets[i]; b < s_.topology->bondOffsets[i + 1]; ++b)
+        count += s_.topology->ownSide(b) ? 1 : 0;
+      out[i] = count;
+    }
+  } else if (name == "Model_Coordinates") {
+    copy(x_);
+  } else if (name == "Coordinates") {
+    copy(y_);
+  } else if (name == "Displacement") {
+    copy(u_);
+  } else if (name == "Velocity") {
+    copy(v_);
+  } else if (name == "Acceleration") {
+    copy(a_);
+  } else if (name == "Force_Density") {
+    copy(f_);
+  } else if (name == "Force") {
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) out[3 * i + d] = f_[3 * i + d] * volume_[i];
+  } else if (name == "External_Force_Density") {
+    if (s_.externalForceDensity) copy(s_.externalForceDensity);
+  } else if (name == "Contact_Force_Density") {
+    if (s_.contactForceDensity) copy(s_.contactForceDensity);
+  } else if (name == "Damage") {
+    s_.evaluator->nodeDamage(out.data());
+  } else if (name == "Dilatation" || name == "Weighted_Volume") {
+    copy(s_.fields->node(name, 1));
+  } else if (name == "Kinetic_Energy") {
+    for (int i = 0; i < n; ++i) {
+      const double v2 =
+          v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
+      out[i] = 0.5 * (*s_.density)[i] * volume_[i] * v2;
+    }
+  } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density") {
+    std::vector<double> w(s_.topology->numOverlap, 0.0);
+    s_.evaluator->storedEnergyDensity(w.data());
+    const bool perVolume = name == "Stored_Elastic_Energy_Density";
+    for (int i = 0; i < n; ++i) out[i] = perVolume ? w[i] : w[i] * volume_[i];
+  } else {
+    throw std::logic_error("no node variable " + name);
+  }
+}
+
+double RunVariables::reduce(const std::vector<int>* points, const std::string& variable,
+                            int component, const std::string& calculation) {
+  std::vector<double> values;
+  nodeVariable(variable, values);
+  const int c = components(variable);
+  double result = calculation == "Sum"       ? 0.0
+                  : calculation == "Minimum" ? std::numeric_limits<double>::max()
+                                             : std::numeric_limits<double>::lowest();
+  auto take = [&](int i) {
+    const double v = values[static_cast<std::size_t>(i) * c + component];
+    if (calculation == "Sum") {
+      result += v;
+    } else if (calculation == "Minimum") {
+      result = std::min(result, v);
+    } else {
+      result = std::max(result, v);
+    }
+  };
+  if (points) {
+    for (int i : *points) take(i);
+  } else {
+    for (int i = 0; i < s_.topology->numOwned; ++i) take(i);
+  }
+  double global = 0;
+  MPI_Op op = calculation == "Sum" ? MPI_SUM : calculation == "Minimum" ? MPI_MIN : MPI_MAX;
+  MPI_Allreduce(&result, &global, 1, MPI_DOUBLE, op, s_.comm);
+  return global;
+}
+
+void RunVariables::globalVariable(const std::string& name, std::vector<double>& values) {
+  values.clear();
+  if (name == "Global_Kinetic_Energy") {
+    values.push_back(reduce(nullptr, "Kinetic_Energy", 0, "Sum"));
+    return;
+  }
+  if (name == "Global_Stored_Elastic_Energy") {
+    values.push_back(reduce(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
+    return;
+  }
+  for (const auto& c : s_.config->computes) {
+    if (c.label != name) continue;
+    const std::vector<int>* points = nullptr;
+    if (c.computeClass == "Block_Data") {
+      for (const auto& b : *s_.blocks)
+        if (b.name == c.region) points = &b.points;
+    } else {
+      points = &s_.nodeSets->at(c.region);
+    }
+    const int n = components(c.variable);
+    for (int d = 0; d < n; ++d) values.push_back(reduce(points, c.variable, d, c.calculation));
+    return;
+  }
+  throw std::logic_error("no global variable " + name);
+}
+
+}  // namespace peridot
