@@ -131,22 +131,65 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 
 // The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
 // small cases reproduce its gold results to the last bits.
+namespace {
+
+// The per-bond options a loop is instantiated for.
+template <bool kInfluence, bool kDamage, bool kSides>
+struct BondOptions {
+  static constexpr bool influence = kInfluence, damage = kDamage, sides = kSides;
+};
+
+// Calls loop(BondOptions<...>{}) with the state's options.
+template <typename Loop>
+void withBondOptions(const ModelState& s, Loop&& loop) {
+  const int key = (s.influence ? 4 : 0) | (s.bondDamage ? 2 : 0) | (s.bondSides ? 1 : 0);
+  switch (key) {
+    case 0:
+      return loop(BondOptions<false, false, false>{});
+    case 1:
+      return loop(BondOptions<false, false, true>{});
+    case 2:
+      return loop(BondOptions<false, true, false>{});
+    case 3:
+      return loop(BondOptions<false, true, true>{});
+    case 4:
+      return loop(BondOptions<true, false, false>{});
+    case 5:
+      return loop(BondOptions<true, false, true>{});
+    case 6:
+      return loop(BondOptions<true, true, false>{});
+    default:
+      return loop(BondOptions<true, true, true>{});
+  }
+}
+
+}  // namespace
+
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
+  withBondOptions(s, [&](auto o) {
+    using O = decltype(o);
+    dilatationLoop<O::influence, O::damage, O::sides>(s, points);
+  });
+}
+
+template <bool kInfluence, bool kDamage, bool kSides>
+void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   for (int i : points) {
     double theta = 0;
     const double m = weightedVolume_[i];
     const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
+#pragma omp simd reduction(+ : theta)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = s.y[3 * j] - yi0, Y1 = s.y[3 * j + 1] - yi1, Y2 = s.y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       const double zeta = s.bondLength[b];
-      const double omega = s.influence ? s.influence[b] : 1.0;
-      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      if (s.topology->ownSide(b))
-        theta += thetaFactor_ * omega * intact * zeta * (dY - zeta) * s.volume[j] / m;
+      const double omega = kInfluence ? s.influence[b] : 1.0;
+      const double intact = kDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double own = kSides ? (s.bondSides[b] & 1) : 1.0;  // adds +0 where not own
+      theta += own * (thetaFactor_ * omega * intact * zeta * (dY - zeta) * s.volume[j] / m);
     }
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
@@ -154,15 +197,19 @@ void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
 }
 
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
-  if (s.bondLaw.kind == BondLaw::Kind::Smooth)
-    forceLoop<true>(s, points);
-  else
-    forceLoop<false>(s, points);
+  const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
+  withBondOptions(s, [&](auto o) {
+    using O = decltype(o);
+    if (smooth)
+      forceLoop<true, O::influence, O::damage, O::sides>(s, points);
+    else
+      forceLoop<false, O::influence, O::damage, O::sides>(s, points);
+  });
 }
 
 // kSmooth: LPS-T (paper 001 eq. 15), t = (1 - d) omega zeta (beta theta + alpha F(s)), with the
 // dilatation of the surviving bond parts (precompute). Otherwise Peridigm's LPS, as it was.
-template <bool kSmooth>
+template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides>
 void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) const {
   const BondLaw law = s.bondLaw;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
@@ -179,14 +226,16 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     const double thetaBetaI = theta[i] * beta[i], alphaI = alpha[i];
+#pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-      if (!(dY > 0)) continue;  // coincident ends: no direction, no force
-      const double omega = omegaOf ? omegaOf[b] : 1.0;
-      const double intact = damage ? 1.0 - damage[b] : 1.0;
-      const double e = dY - zeta[b];
+      // Coincident ends have no direction and, with Y = 0, add +0 (divided by 1): no branch.
+      const double length = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      const double dY = length > 0 ? length : 1.0;
+      const double omega = kInfluence ? omegaOf[b] : 1.0;
+      const double intact = kDamage ? 1.0 - damage[b] : 1.0;
+      const double e = length - zeta[b];
       // Force state of i on the bond and of j on the reversed bond (pull form: each point sums
       // only its own list, in global-id order, whatever the rank count), each term as Peridigm
       // forms it so that two-point cases reproduce its gold results to the last bits.
@@ -199,7 +248,7 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
         tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
       }
-      if (s.bondSides) {  // an end whose horizon does not hold the bond exerts no force state
+      if constexpr (kSides) {  // an end whose horizon does not hold the bond exerts no force
         ti *= s.bondSides[b] & 1;
         tj *= (s.bondSides[b] >> 1) & 1;
       }

@@ -40,7 +40,11 @@ class Elastic : public MaterialModel {
   static constexpr const char* kBeta = "LPS_Beta";
 
  private:
-  template <bool kSmooth>
+  // The bond loops, instantiated per option (influence array, bond damage, one-sided bonds,
+  // smooth law) so that their bodies have no branch and vectorize.
+  template <bool kInfluence, bool kDamage, bool kSides>
+  void dilatationLoop(const ModelState& state, const std::vector<int>& points);
+  template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides>
   void forceLoop(const ModelState& state, const std::vector<int>& points) const;
   void smoothEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const;
