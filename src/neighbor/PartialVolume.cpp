@@ -27,7 +27,14 @@ std::size_t CellFractionCache::Hash::operator()(const Key& k) const {
 }
 
 double CellFractionCache::fraction(const double xi[3], double h, double horizon, int dimension) {
+  // Cells wholly inside or outside need no cache (most bonds; all of them could be unique on an
+  // unstructured mesh, and the cache is bounded for the same reason).
+  const double zeta0 = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+  const double reach = cellOverlapReach(h, dimension);
+  if (zeta0 + reach <= horizon) return 1.0;
+  if (zeta0 - reach >= horizon) return 0.0;
   constexpr double kSteps = 1048576.0;  // 2^20 per cell edge
+  constexpr std::size_t kMaxEntries = 1 << 20;
   Key key{{0, 0, 0}, h, horizon};
   double rounded[3] = {0, 0, 0};
   for (int k = 0; k < dimension; ++k) {
@@ -39,7 +46,7 @@ double CellFractionCache::fraction(const double xi[3], double h, double horizon,
   const double zeta =
       std::sqrt(rounded[0] * rounded[0] + rounded[1] * rounded[1] + rounded[2] * rounded[2]);
   const double f = zeta > 0 ? cellFractionInHorizon(rounded, zeta, h, horizon, dimension) : 1.0;
-  cache_.emplace(key, f);
+  if (cache_.size() < kMaxEntries) cache_.emplace(key, f);
   return f;
 }
 

@@ -29,7 +29,8 @@ bool cellOverlapsHorizon(const double xi[3], double h, double horizon, int dimen
 // cellFractionInHorizon for a scene's many bonds: on a lattice the same offsets recur at every
 // point, so fractions are kept per offset. The offset is rounded to h / 2^20 before the
 // fraction is computed from it, so that the result does not depend on which bond came first
-// (nodal results stay the same at any rank count).
+// (nodal results stay the same at any rank count). Only cells the sphere crosses are cached,
+// at most 2^20 of them (beyond that, fractions are computed each time: the same values).
 class CellFractionCache {
  public:
   double fraction(const double xi[3], double h, double horizon, int dimension);
