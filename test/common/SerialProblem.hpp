@@ -84,6 +84,22 @@ struct Problem {
   const double* force(long long g) const {
     return fields->nodeField("Force_Density").data + 3 * local(g);
   }
+  // Deforms every point (owned, ghosts, images) to y = x + H x, runs the models' precompute and
+  // returns the stored energy density at local point k. The precompute is called directly: a
+  // ghost refresh would give periodic images the undeformed period.
+  double energyDensityUnder(const double H[3][3], int k = 0) {
+    double* y = fields->node("Coordinates", 3);
+    const double* x = fields->node("Model_Coordinates", 3);
+    for (int p = 0; p < topology.numOverlap; ++p)
+      for (int a = 0; a < 3; ++a) {
+        y[3 * p + a] = x[3 * p + a];
+        for (int b = 0; b < 3; ++b) y[3 * p + a] += H[a][b] * x[3 * p + b];
+      }
+    for (auto& b : blocks) b.material->precompute(evaluator->state(), b.points);
+    std::vector<double> w(topology.numOverlap);
+    evaluator->storedEnergyDensity(w.data());
+    return w[k];
+  }
 };
 
 }  // namespace testing

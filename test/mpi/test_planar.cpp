@@ -349,7 +349,8 @@ TEST(Planar, TractionSurfaceAreaIsEdgeLengthTimesThickness) {
   auto sim = makeSimulation(deck, MPI_COMM_WORLD);
   sim->run();  // the body force is applied when the run starts
   std::vector<double> g;
-  sim->variables().globalVariable("VelocitySum", g);  // the relabelled sum of the body force density
+  sim->variables().globalVariable("VelocitySum",
+                                  g);  // the relabelled sum of the body force density
   ASSERT_EQ(g.size(), 3u);
   // 12 points of volume 1 x 1 x 0.1: total force = sum(b) V = sigma x (12 x 0.1) = 3.
   EXPECT_NEAR(g[1] * 0.1, 2.5 * 12.0 * 0.1, 1e-12);

@@ -365,21 +365,6 @@ TEST(LinearizedLPSEnergy, PlaneModeMustMatchTheDiscretization) {
       InputError);
 }
 
-template <class P>
-double deformedCentreEnergy(P& pr, const double H[3][3]) {
-  double* y = pr.fields->node("Coordinates", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int k = 0; k < pr.topology.numOverlap; ++k)
-    for (int a = 0; a < 3; ++a) {
-      y[3 * k + a] = x[3 * k + a];
-      for (int b = 0; b < 3; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
-    }
-  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
-  std::vector<double> w(pr.topology.numOverlap);
-  pr.evaluator->storedEnergyDensity(w.data());
-  return w[0];
-}
-
 // Energy density at the centre of a periodic lattice (3D, or one layer of a planar lattice with
 // cell volume 1 x 1 x thickness) under displacement gradient H.
 double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const double H[3][3],
@@ -397,10 +382,10 @@ double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const
   }
   if (planar) {
     auto pr = planarProblem(pts, delta, material, box, thickness, thickness);
-    return deformedCentreEnergy(pr, H);
+    return pr.energyDensityUnder(H);
   }
   Problem pr(pts, delta, material, nullptr, box);
-  return deformedCentreEnergy(pr, H);
+  return pr.energyDensityUnder(H);
 }
 
 // 3D: the dilatation energy 9 K s^2 / 2 is exact on any lattice; under simple shear and a general

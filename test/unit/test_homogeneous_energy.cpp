@@ -48,19 +48,7 @@ double centreEnergy(std::shared_ptr<MaterialModel> material, double delta, const
     box.upper[d] = n - 0.5;
   }
   Problem pr(pts, delta, material, nullptr, box);
-  double* y = pr.fields->node("Coordinates", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int k = 0; k < pr.topology.numOverlap; ++k)
-    for (int a = 0; a < 3; ++a) {
-      y[3 * k + a] = x[3 * k + a];
-      for (int b = 0; b < 3; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
-    }
-  // The dilatation the energy needs comes from the model's precompute (called directly: a
-  // ghost refresh would give the images the undeformed period).
-  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
-  std::vector<double> w(pr.topology.numOverlap);
-  pr.evaluator->storedEnergyDensity(w.data());
-  return w[0];
+  return pr.energyDensityUnder(H);
 }
 
 // LPS: the dilatation energy is exact on any lattice (the dilatation of a homogeneous stretch is

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <random>
 
+#include "Materials.hpp"
 #include "SerialProblem.hpp"
 #include "neighbor/PartialVolume.hpp"
 
@@ -82,33 +83,6 @@ testing::Problem lattice(std::shared_ptr<MaterialModel> m, double delta, int dim
                           influence, dim == 3 ? 0.0 : thickness, partial);
 }
 
-// Energy density at a lattice point under y = x + H x (H 3x3, zero third row/column in 2D).
-double latticeEnergy(testing::Problem& pr, const double H[3][3]) {
-  double* y = pr.fields->node("Coordinates", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int k = 0; k < pr.topology.numOverlap; ++k)
-    for (int a = 0; a < 3; ++a) {
-      y[3 * k + a] = x[3 * k + a];
-      for (int b = 0; b < 3; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
-    }
-  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
-  std::vector<double> w(pr.topology.numOverlap);
-  pr.evaluator->storedEnergyDensity(w.data());
-  return w[0];
-}
-
-std::shared_ptr<MaterialModel> material(const std::string& model, const std::string& mode, double E,
-                                        double nu) {
-  Teuchos::ParameterList p;
-  p.set("Material Model", model);
-  p.set("Density", 1.0);
-  p.set("Young's Modulus", E);
-  if (nu > -1) p.set("Poisson's Ratio", nu);
-  if (!mode.empty()) p.set(mode, true);
-  ListReader r(p, "Materials -> M");
-  return createMaterial(r);
-}
-
 // Continuum energy density of the strain eps (3x3, symmetric): 3D, or in-plane for a mode.
 double continuumEnergy(const std::string& mode, double E, double nu, const double eps[3][3]) {
   const double mu = E / (2 * (1 + nu));
@@ -146,8 +120,9 @@ TEST(PartialVolumes, NeighbourhoodVolumeIsTheBall) {
   for (int dim : {3, 2}) {
     for (double delta : {3.0, 4.0, 5.0}) {
       const double t = 0.5;
-      testing::Problem pr = lattice(material("Elastic", dim == 3 ? "" : "Plane Strain", 1.0, 0.25),
-                                    delta, dim, t, true);
+      testing::Problem pr =
+          lattice(testing::material("Elastic", dim == 3 ? "" : "Plane Strain", 1.0, 0.25), delta,
+                  dim, t, true);
       const ModelState& s = pr.evaluator->state();
       double sum = 0, sumCentres = 0;
       for (std::int64_t b = pr.topology.bondOffsets[0]; b < pr.topology.bondOffsets[1]; ++b) {
@@ -174,7 +149,7 @@ std::vector<double> errors(std::shared_ptr<MaterialModel> m, const std::string& 
   testing::Problem pr = lattice(std::move(m), delta, dim, 0.5, partial, influence);
   std::vector<double> e;
   for (const Deformation& d : deformations(dim))
-    e.push_back(latticeEnergy(pr, d.H) / continuumEnergy(mode, E, nu, d.eps) - 1);
+    e.push_back(pr.energyDensityUnder(d.H) / continuumEnergy(mode, E, nu, d.eps) - 1);
   return e;
 }
 
@@ -195,8 +170,9 @@ TEST(PartialVolumes, LPSHomogeneousEnergyWithinOnePercent) {
       const int dim = mode.empty() ? 3 : 2;
       for (double nu : {0.1, 0.22, 0.3, 0.45}) {
         for (double delta : dim == 3 ? std::vector<double>{3, 4} : std::vector<double>{4, 5}) {
-          const auto e = errors(material(model, mode, E, nu), mode, E, nu, delta, true);
-          const auto c = errors(material(model, mode, E, nu), mode, E, nu, delta + 0.015, false);
+          const auto e = errors(testing::material(model, mode, E, nu), mode, E, nu, delta, true);
+          const auto c =
+              errors(testing::material(model, mode, E, nu), mode, E, nu, delta + 0.015, false);
           std::printf(
               "  %-18s %-12s  %4.2f  %5.1f  %+8.3f%% %+8.3f%% %+8.3f%% | %+8.3f%% %+8.3f%%"
               " %+8.3f%%\n",
@@ -234,7 +210,7 @@ TEST(PartialVolumes, BondBasedHomogeneousEnergyWithinOnePercent) {
     const double nu = k.mode == "Plane Stress" ? 1.0 / 3.0 : 0.25;
     for (const std::string model : {"Elastic Bond Based", "Normalized PMB"}) {
       const auto e =
-          errors(material(model, k.mode, E, -2), k.mode, E, nu, k.delta, true, k.influence);
+          errors(testing::material(model, k.mode, E), k.mode, E, nu, k.delta, true, k.influence);
       std::printf(
           "  %-18s %-12s %-8s delta %4.1f: dilatation %+7.3f%%, shear %+7.3f%%, "
           "45-degree shear %+7.3f%%\n",
@@ -256,9 +232,10 @@ TEST(PartialVolumes, DISABLED_BondBasedConvergenceStudy) {
       for (double delta : mode.empty() ? std::vector<double>{3, 4, 5, 6, 8}
                                        : std::vector<double>{3, 4, 5, 6, 8, 12, 16}) {
         for (const std::string model : {"Elastic Bond Based", "Normalized PMB"}) {
-          const auto e = errors(material(model, mode, E, -2), mode, E, nu, delta, true, influence);
-          const auto c =
-              errors(material(model, mode, E, -2), mode, E, nu, delta + 0.015, false, influence);
+          const auto e =
+              errors(testing::material(model, mode, E), mode, E, nu, delta, true, influence);
+          const auto c = errors(testing::material(model, mode, E), mode, E, nu, delta + 0.015,
+                                false, influence);
           std::printf(
               "  %-18s %-12s %-8s %4.1f  partial %+7.3f%% %+7.3f%% %+7.3f%% | centres "
               "%+7.3f%% %+7.3f%% %+7.3f%%\n",

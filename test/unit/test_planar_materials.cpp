@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "Materials.hpp"
 #include "PlanarProblem.hpp"
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
@@ -22,17 +23,7 @@ namespace {
 using testing::PlanarProblem;
 const double kPi = 3.14159265358979323846;
 
-std::shared_ptr<MaterialModel> material(const std::string& model, const std::string& mode, double E,
-                                        double nu = -1) {
-  Teuchos::ParameterList p;
-  p.set("Material Model", model);
-  p.set("Density", 1.0);
-  p.set("Young's Modulus", E);
-  if (nu > -1) p.set("Poisson's Ratio", nu);
-  if (!mode.empty()) p.set(mode, true);
-  ListReader r(p, "Materials -> M");
-  return createMaterial(r);
-}
+using testing::material;
 
 // In-plane continuum energy density of the in-plane strain eps (2x2) of an isotropic material.
 double continuumEnergy(const std::string& mode, double E, double nu, const double eps[2][2]) {
@@ -60,17 +51,8 @@ double latticeEnergy(std::shared_ptr<MaterialModel> m, double delta, const doubl
     box.upper[d] = n - 0.5;
   }
   PlanarProblem pr(pts, delta, m, thickness, 1.0, nullptr, box, influence);
-  double* y = pr.fields->node("Coordinates", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int k = 0; k < pr.topology.numOverlap; ++k)
-    for (int a = 0; a < 2; ++a) {
-      y[3 * k + a] = x[3 * k + a];
-      for (int b = 0; b < 2; ++b) y[3 * k + a] += H[a][b] * x[3 * k + b];
-    }
-  for (auto& b : pr.blocks) b.material->precompute(pr.evaluator->state(), b.points);
-  std::vector<double> w(pr.topology.numOverlap);
-  pr.evaluator->storedEnergyDensity(w.data());
-  return w[0];
+  const double H3[3][3] = {{H[0][0], H[0][1], 0}, {H[1][0], H[1][1], 0}, {0, 0, 0}};
+  return pr.energyDensityUnder(H3);
 }
 
 // LPS in 2D. Dilatation: exact on any lattice (theta is the same discrete sum as m). Simple
