@@ -16,6 +16,7 @@
 #include <cmath>
 #include <vector>
 
+#include "materials/BondOptions.hpp"
 #include "materials/MaterialModel.hpp"
 
 namespace peridot {
@@ -88,23 +89,12 @@ void pairForceWithLaw(const ModelState& s, const std::vector<int>& points, const
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false>(s, points, c);
 }
 
-template <bool kOverLength, bool kDamage, bool kSides>
-void pairForceWithInfluence(const ModelState& s, const std::vector<int>& points, const double* c) {
-  if (s.influence)
-    pairForceWithLaw<kOverLength, kDamage, kSides, true>(s, points, c);
-  else
-    pairForceWithLaw<kOverLength, kDamage, kSides, false>(s, points, c);
-}
-
 template <bool kOverLength>
 void pairForce(const ModelState& s, const std::vector<int>& points, const double* c) {
-  if (s.bondDamage) {
-    s.bondSides ? pairForceWithInfluence<kOverLength, true, true>(s, points, c)
-                : pairForceWithInfluence<kOverLength, true, false>(s, points, c);
-  } else {
-    s.bondSides ? pairForceWithInfluence<kOverLength, false, true>(s, points, c)
-                : pairForceWithInfluence<kOverLength, false, false>(s, points, c);
-  }
+  withBondOptions(s, [&](auto o) {
+    using O = decltype(o);
+    pairForceWithLaw<kOverLength, O::damage, O::sides, O::influence>(s, points, c);
+  });
 }
 
 template <bool kOverLength>

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/BondOptions.hpp"
+
 namespace peridot {
 
 namespace {
@@ -131,40 +133,6 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 
 // The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
 // small cases reproduce its gold results to the last bits.
-namespace {
-
-// The per-bond options a loop is instantiated for.
-template <bool kInfluence, bool kDamage, bool kSides>
-struct BondOptions {
-  static constexpr bool influence = kInfluence, damage = kDamage, sides = kSides;
-};
-
-// Calls loop(BondOptions<...>{}) with the state's options.
-template <typename Loop>
-void withBondOptions(const ModelState& s, Loop&& loop) {
-  const int key = (s.influence ? 4 : 0) | (s.bondDamage ? 2 : 0) | (s.bondSides ? 1 : 0);
-  switch (key) {
-    case 0:
-      return loop(BondOptions<false, false, false>{});
-    case 1:
-      return loop(BondOptions<false, false, true>{});
-    case 2:
-      return loop(BondOptions<false, true, false>{});
-    case 3:
-      return loop(BondOptions<false, true, true>{});
-    case 4:
-      return loop(BondOptions<true, false, false>{});
-    case 5:
-      return loop(BondOptions<true, false, true>{});
-    case 6:
-      return loop(BondOptions<true, true, false>{});
-    default:
-      return loop(BondOptions<true, true, true>{});
-  }
-}
-
-}  // namespace
-
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
