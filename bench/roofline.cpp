@@ -44,8 +44,8 @@ struct Scene {
     double* v = fields->node("Volume", 1);
     double* hz = fields->node("Horizon", 1);
     for (int p = 0; p < topology.numOverlap; ++p) {
-      const std::size_t c = topology.overlapCloudIndex[p];
-      for (int d = 0; d < 3; ++d) x[3 * p + d] = y[3 * p + d] = cloud.x[3 * c + d] * (1 + 1e-4 * d);
+      for (int d = 0; d < 3; ++d)
+        x[3 * p + d] = y[3 * p + d] = topology.referencePosition[3 * p + d] * (1 + 1e-4 * d);
       v[p] = 1.0;
       hz[p] = 3.015;
     }

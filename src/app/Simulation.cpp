@@ -42,15 +42,19 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     : config_(std::move(config)), comm_(comm), log_(log) {
   Timers::Scope setup(timers_, "Setup");
   MPI_Comm_rank(comm_, &rank_);
+  PointCloud cloud;  // this rank's share, until the topology has moved it to the owners
   {
     Timers::Scope t(timers_, "Setup: read mesh");
-    cloud_ = buildPointCloud(config_.discretization);
+    cloud = buildPointCloud(config_.discretization, comm_);
   }
+  blockNames_ = cloud.blockNames;
+  thickness_ = cloud.thickness;
+  planar_ = cloud.dimension == 2;
   checkDimension();
   // Blocks of the mesh -> block groups of the deck, and each point's horizon.
   std::map<int, int> groupOfBlock;  // mesh block id -> index in config_.blocks
   std::map<std::string, int> blockIdOfName;
-  for (const auto& kv : cloud_.blockNames) blockIdOfName[kv.second] = kv.first;
+  for (const auto& kv : blockNames_) blockIdOfName[kv.second] = kv.first;
   int defaultGroup = -1;
   for (std::size_t g = 0; g < config_.blocks.size(); ++g) {
     for (const auto& name : config_.blocks[g].blockNames) {
@@ -72,7 +76,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
       groupOfBlock[it->second] = static_cast<int>(g);
     }
   }
-  for (const auto& kv : cloud_.blockNames) {
+  for (const auto& kv : blockNames_) {
     if (groupOfBlock.count(kv.first)) continue;
     if (defaultGroup < 0) {
       throw InputError("Blocks", "block \"" + kv.second +
@@ -86,31 +90,34 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     horizonOf[g] = std::make_unique<Expression>(config_.blocks[g].horizon,
                                                 std::vector<std::string>{"x", "y", "z"},
                                                 config_.blocks[g].path + " -> Horizon");
-  cloudHorizon_.resize(cloud_.size());
-  for (std::size_t p = 0; p < cloud_.size(); ++p) {
-    const int g = groupOfBlock.at(cloud_.blockId[p]);
-    cloudHorizon_[p] = horizonOf[g]->evaluate(&cloud_.x[3 * p]);
-    if (!(cloudHorizon_[p] > 0) || !std::isfinite(cloudHorizon_[p])) {
-      throw InputError(config_.blocks[g].path + " -> Horizon",
-                       "the horizon must be positive, got " + formatNumber(cloudHorizon_[p]) +
-                           " at point " + std::to_string(cloud_.globalId[p] + 1));
+  std::vector<double> cloudHorizon(cloud.size());
+  double horizonRange[2] = {std::numeric_limits<double>::max(), 0.0};  // smallest, largest
+  {
+    std::string bad;
+    for (std::size_t p = 0; p < cloud.size() && bad.empty(); ++p) {
+      const int g = groupOfBlock.at(cloud.blockId[p]);
+      cloudHorizon[p] = horizonOf[g]->evaluate(&cloud.x[3 * p]);
+      if (!(cloudHorizon[p] > 0) || !std::isfinite(cloudHorizon[p])) {
+        bad = config_.blocks[g].path + " -> Horizon: the horizon must be positive, got " +
+              formatNumber(cloudHorizon[p]) + " at point " + std::to_string(cloud.globalId[p] + 1);
+      } else if (cloud.globalId[p] + 1 > 2147483647LL) {
+        bad = config_.discretization.meshFilePath + ": point id " +
+              std::to_string(cloud.globalId[p] + 1) +
+              " does not fit the 32-bit ids of Peridot's Exodus output";
+      }
+      horizonRange[0] = std::min(horizonRange[0], cloudHorizon[p]);
+      horizonRange[1] = std::max(horizonRange[1], cloudHorizon[p]);
     }
-  }
-  nodeSetIds_ = collectNodeSets(cloud_, config_.nodeSets);
-  for (long long id : cloud_.globalId) {
-    if (id + 1 > 2147483647LL) {
-      throw InputError(config_.discretization.meshFilePath,
-                       "point id " + std::to_string(id + 1) +
-                           " does not fit the 32-bit ids of Peridot's Exodus output");
-    }
+    throwIfAnyRank(bad, comm_);
+    MPI_Allreduce(MPI_IN_PLACE, &horizonRange[0], 1, MPI_DOUBLE, MPI_MIN, comm_);
+    MPI_Allreduce(MPI_IN_PLACE, &horizonRange[1], 1, MPI_DOUBLE, MPI_MAX, comm_);
   }
 
   if (config_.discretization.periodic.any()) {
     // Images are taken one box length away: the box must be longer than the reach, or the
     // images two boxes away would be missed. (Shorter than twice the reach, a point meets both a
     // neighbour and its image, as the periodic lattice it stands for does.)
-    const double largest = *std::max_element(cloudHorizon_.begin(), cloudHorizon_.end());
-    const double reach = searchReach(neighborhoodRule(config_.discretization), largest);
+    const double reach = searchReach(neighborhoodRule(config_.discretization), horizonRange[1]);
     for (int d = 0; d < 3; ++d) {
       const auto& box = config_.discretization.periodic;
       if (box.periodic[d] && box.upper[d] - box.lower[d] <= reach) {
@@ -128,13 +135,16 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.bondFilters = &config_.discretization.bondFilters;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
-    topology_ = buildTopology(cloud_, cloudHorizon_, options, comm_);
+    topology_ = buildTopology(cloud, cloudHorizon, options, comm_);
   }
+  cloud = PointCloud();
+  cloudHorizon = std::vector<double>();
   if (topology_.globalNumBonds == 0) {
-    double h = *std::min_element(cloudHorizon_.begin(), cloudHorizon_.end());
     throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
-                                   formatNumber(h) + ") is smaller than the point spacing");
+                                   formatNumber(horizonRange[0]) +
+                                   ") is smaller than the point spacing");
   }
+  nodeSetIds_ = collectNodeSets(topology_, config_.nodeSets);
   {
     std::vector<long long> lonely;
     for (int i = 0; i < topology_.numOwned; ++i)
@@ -159,18 +169,17 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   fields_->markPosition("Model_Coordinates");
   fields_->markPosition("Coordinates");
   for (int k = 0; k < topology_.numOverlap; ++k) {
-    const std::size_t p = topology_.overlapCloudIndex[k];
-    const double* shift = topology_.shiftOf(k);  // non-zero for periodic images
-    for (int d = 0; d < 3; ++d) x_[3 * k + d] = y_[3 * k + d] = cloud_.x[3 * p + d] + shift[d];
-    volume_[k] = cloud_.volume[p];
-    horizon[k] = cloudHorizon_[p];
+    for (int d = 0; d < 3; ++d)
+      x_[3 * k + d] = y_[3 * k + d] = topology_.referencePosition[3 * k + d];
+    volume_[k] = topology_.volume[k];
+    horizon[k] = topology_.horizon[k];
   }
   u_ = fields_->node("Displacement", 3);
   v_ = fields_->node("Velocity", 3);
   a_ = fields_->node("Acceleration", 3);
 
   // Blocks with their owned points.
-  for (const auto& kv : cloud_.blockNames) {
+  for (const auto& kv : blockNames_) {
     const auto& group = config_.blocks[groupOfBlock.at(kv.first)];
     Block b;
     b.name = kv.second;
@@ -200,7 +209,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   blockIndexOfPoint_.resize(topology_.numOwned);
   density_.resize(topology_.numOwned);
   for (int i = 0; i < topology_.numOwned; ++i) {
-    const int id = cloud_.blockId[topology_.overlapCloudIndex[i]];
+    const int id = topology_.blockId[i];
     const int index = static_cast<int>(
         std::find_if(blocks_.begin(), blocks_.end(), [&](const Block& b) { return b.id == id; }) -
         blocks_.begin());
@@ -211,7 +220,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 
   evaluator_ = std::make_unique<ModelEvaluator>(topology_, *fields_, blocks_,
                                                 config_.discretization.influenceFunction, timers_);
-  if (planar_) evaluator_->setPlanar(cloud_.thickness);
+  if (planar_) evaluator_->setPlanar(thickness_);
   evaluator_->setPartialVolumes(config_.discretization.partialVolumes);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
@@ -219,8 +228,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
                                   topology_.overlapGlobalId.begin() + topology_.numOwned);
   for (const auto& kv : nodeSetIds_) nodeSets_[kv.first] = ownedPoints(kv.second, ownedIds);
+  std::vector<long long> setSizes;  // over all ranks, in the map's (name) order
+  for (const auto& kv : nodeSetIds_) setSizes.push_back(static_cast<long long>(kv.second.size()));
+  MPI_Allreduce(MPI_IN_PLACE, setSizes.data(), static_cast<int>(setSizes.size()), MPI_LONG_LONG,
+                MPI_SUM, comm_);
+  std::size_t setIndex = 0;
   for (const auto& kv : nodeSetIds_) {
-    if (kv.second.empty()) {
+    if (setSizes[setIndex++] == 0) {
       for (const auto& c : config_.conditions)
         if (c.nodeSet == kv.first)
           throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
@@ -286,7 +300,6 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 }
 
 void Simulation::checkDimension() {
-  planar_ = cloud_.dimension == 2;
   for (const auto& c : config_.conditions) {
     if (planar_ && c.coordinate == 2) {
       throw InputError(c.path + " -> Coordinate",
@@ -320,8 +333,8 @@ void Simulation::checkDimension() {
 }
 
 void Simulation::openOutputs() {
-  outputs_ = std::make_unique<OutputManager>(config_, cloud_, nodeSetIds_, topology_, *variables_,
-                                             timers_);
+  outputs_ = std::make_unique<OutputManager>(config_, blockNames_, planar_ ? 2 : 3, nodeSetIds_,
+                                             topology_, *variables_, timers_);
 }
 
 Simulation::~Simulation() = default;
@@ -437,7 +450,7 @@ void Simulation::run() {
       log_ << ", bond imbalance (max/avg): " << text;
     }
     log_ << "\n";
-    if (planar_) log_ << "Planar (2D) run, thickness " << cloud_.thickness << "\n";
+    if (planar_) log_ << "Planar (2D) run, thickness " << thickness_ << "\n";
     log_ << "Stable time step estimate: " << stableDt_ << "\n";
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";

@@ -60,8 +60,8 @@ class Simulation {
   int rank_ = 0;
   std::ostream& log_;
   Timers timers_;
-  PointCloud cloud_;
-  std::vector<double> cloudHorizon_;
+  std::map<int, std::string> blockNames_;  // mesh block id -> name, every block of the mesh
+  double thickness_ = 1.0;                 // of a 2D discretization
   Topology topology_;
   std::unique_ptr<FieldManager> fields_;
   std::vector<Block> blocks_;

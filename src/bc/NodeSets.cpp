@@ -25,8 +25,10 @@ bool allIntegers(const std::string& s) {
   return any;
 }
 
+// The ids of `text` that `keep` accepts (all ids are range-checked).
+template <class Keep>
 std::vector<long long> readIds(const std::string& text, const std::string& path,
-                               const std::string& source, long long numPoints) {
+                               const std::string& source, long long numPoints, Keep keep) {
   std::vector<long long> ids;
   std::istringstream in(text);
   std::string line;
@@ -47,7 +49,7 @@ std::vector<long long> readIds(const std::string& text, const std::string& path,
                                    "the discretization has " + std::to_string(numPoints) +
                                    " points)");
       }
-      ids.push_back(id - 1);
+      if (keep(id - 1)) ids.push_back(id - 1);
     }
   }
   return ids;
@@ -56,22 +58,38 @@ std::vector<long long> readIds(const std::string& text, const std::string& path,
 }  // namespace
 
 std::map<std::string, std::vector<long long>> collectNodeSets(
-    const PointCloud& cloud, const std::vector<NodeSetSpec>& specs) {
+    const Topology& topology, const std::vector<NodeSetSpec>& specs) {
   std::map<std::string, std::vector<long long>> sets;
-  long long maxId = 0;
-  for (long long g : cloud.globalId) maxId = std::max(maxId, g + 1);
-  for (const auto& ps : cloud.pointSets) sets[ps.name] = ps.globalIds;
+  // Ids run from 0 to the largest id (Exodus element ids may leave gaps).
+  long long maxId = 0, localMax = 0;
+  for (int i = 0; i < topology.numOwned; ++i)
+    localMax = std::max(localMax, topology.overlapGlobalId[i] + 1);
+  MPI_Allreduce(&localMax, &maxId, 1, MPI_LONG_LONG, MPI_MAX, topology.comm);
+  std::vector<long long> owned(topology.overlapGlobalId.begin(),
+                               topology.overlapGlobalId.begin() + topology.numOwned);
+  std::sort(owned.begin(), owned.end());
+  auto isOwned = [&](long long g) { return std::binary_search(owned.begin(), owned.end(), g); };
+  for (std::size_t s = 0; s < topology.pointSetNames.size(); ++s) {
+    std::vector<long long>& ids = sets[topology.pointSetNames[s]];
+    for (int i : topology.ownedPointSets[s]) ids.push_back(topology.overlapGlobalId[i]);
+    std::sort(ids.begin(), ids.end());
+  }
   for (const auto& spec : specs) {
     if (sets.count(spec.name)) {
       throw InputError(spec.path,
                        "a node set named \"" + spec.name + "\" already exists in the mesh");
     }
     std::vector<long long> ids;
+    long long listed = 0;  // ids in the set, owned here or not
+    auto keep = [&](long long g) {
+      ++listed;
+      return isOwned(g);
+    };
     if (spec.value.find_first_not_of(" \t\r\n") == std::string::npos) {
       throw InputError(spec.path, "the node set is empty");
     }
     if (allIntegers(spec.value)) {
-      ids = readIds(spec.value, spec.path, "node set", maxId);
+      ids = readIds(spec.value, spec.path, "node set", maxId, keep);
     } else {
       std::string fileName = spec.value;
       fileName.erase(0, fileName.find_first_not_of(" \t"));
@@ -83,9 +101,9 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
       }
       std::stringstream text;
       text << in.rdbuf();
-      ids = readIds(text.str(), spec.path, "node set file \"" + fileName + "\"", maxId);
+      ids = readIds(text.str(), spec.path, "node set file \"" + fileName + "\"", maxId, keep);
     }
-    if (ids.empty()) throw InputError(spec.path, "the node set is empty");
+    if (listed == 0) throw InputError(spec.path, "the node set is empty");
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     sets[spec.name] = ids;

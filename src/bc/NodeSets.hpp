@@ -6,14 +6,15 @@
 #include <vector>
 
 #include "deck/RunConfig.hpp"
-#include "discretization/PointCloud.hpp"
+#include "parallel/Topology.hpp"
 
 namespace peridot {
 
-// Global (0-based) ids of every named set, mesh sets first; deck sets override nothing: a
-// name defined twice is an error.
+// Every named set (mesh sets first; deck sets override nothing: a name defined twice is an
+// error) as the global (0-based) ids of its points owned by this rank, sorted. Each rank keeps
+// only its owned ids, whatever the size of a set.
 std::map<std::string, std::vector<long long>> collectNodeSets(
-    const PointCloud& cloud, const std::vector<NodeSetSpec>& specs);
+    const Topology& topology, const std::vector<NodeSetSpec>& specs);
 
 // Owned local indices of a set's points, given the owned global ids (local index = position).
 std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,

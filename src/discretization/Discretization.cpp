@@ -417,7 +417,7 @@ PointCloud tensorProductCylinder(const DiscretizationConfig& c) {
 
 }  // namespace
 
-PointCloud buildPointCloud(const DiscretizationConfig& c) {
+PointCloud buildWholePointCloud(const DiscretizationConfig& c) {
   if (c.type == "Exodus") {
     PointCloud cloud = readExodusMesh(c.meshFile, c.meshFilePath, c.thickness);
     // Keys that depend on the dimension, now that the mesh has told it.
@@ -438,6 +438,35 @@ PointCloud buildPointCloud(const DiscretizationConfig& c) {
   if (c.generator == DiscretizationConfig::Generator::TensorProduct3D) return tensorProduct3D(c);
   if (c.generator == DiscretizationConfig::Generator::TensorProduct2D) return tensorProduct2D(c);
   return tensorProductCylinder(c);
+}
+
+PointCloud buildPointCloud(const DiscretizationConfig& c, MPI_Comm comm) {
+  // TODO(distributed readers): every rank still reads the whole cloud and keeps its slice.
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  PointCloud whole = buildWholePointCloud(c);
+  whole.globalNumPoints = static_cast<long long>(whole.size());
+  if (size == 1) return whole;
+  const std::size_t n = whole.size(), begin = n * rank / size, end = n * (rank + 1) / size;
+  PointCloud share;
+  share.x.assign(whole.x.begin() + 3 * begin, whole.x.begin() + 3 * end);
+  share.volume.assign(whole.volume.begin() + begin, whole.volume.begin() + end);
+  share.blockId.assign(whole.blockId.begin() + begin, whole.blockId.begin() + end);
+  share.globalId.assign(whole.globalId.begin() + begin, whole.globalId.begin() + end);
+  share.blockNames = whole.blockNames;
+  share.dimension = whole.dimension;
+  share.thickness = whole.thickness;
+  share.globalNumPoints = whole.globalNumPoints;
+  std::vector<long long> mine(share.globalId);
+  std::sort(mine.begin(), mine.end());
+  for (const auto& set : whole.pointSets) {
+    PointSet s{set.name, {}};
+    for (long long g : set.globalIds)
+      if (std::binary_search(mine.begin(), mine.end(), g)) s.globalIds.push_back(g);
+    share.pointSets.push_back(std::move(s));
+  }
+  return share;
 }
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& c) {

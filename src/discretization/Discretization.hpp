@@ -1,6 +1,8 @@
 #pragma once
 // Deck -> PointCloud: the `Discretization` section (Exodus mesh, text file, or Peridigm's
 // PdQuickGrid tensor-product generators) plus the neighbourhood rule that goes with it.
+#include <mpi.h>
+
 #include <string>
 #include <vector>
 
@@ -80,8 +82,13 @@ struct DiscretizationConfig {
 // Validates the `Discretization` list (reads every key; unknown keys are errors).
 DiscretizationConfig readDiscretizationConfig(ListReader discretization);
 
-// Builds the whole point cloud (every rank may call it; it is deterministic).
-PointCloud buildPointCloud(const DiscretizationConfig& config);
+// Collective: builds this rank's share of the point cloud (see PointCloud). No rank reads or
+// holds more than its share plus O(number of ranks): Exodus meshes through partial reads, text
+// files by byte ranges, generators only their slice.
+PointCloud buildPointCloud(const DiscretizationConfig& config, MPI_Comm comm);
+
+// Not collective: the whole cloud on the calling rank (tests and tools on small meshes).
+PointCloud buildWholePointCloud(const DiscretizationConfig& config);
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& config);
 

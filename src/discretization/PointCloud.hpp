@@ -1,6 +1,10 @@
 #pragma once
-// The discretization's product: one point per element (or generator cell / text line),
-// with its reference position, volume, block and global id, plus named point sets.
+// The discretization's product on one rank: this rank's share of the points (one per element,
+// generator cell or text line), each with its reference position, volume, block and global id,
+// plus the named point sets restricted to those points. The shares of all ranks together hold
+// every point exactly once; which rank reads which point is the reader's business (the
+// decomposition moves points to their owners afterwards). blockNames, the set names, dimension,
+// thickness and globalNumPoints are the same on every rank.
 #include <map>
 #include <string>
 #include <vector>
@@ -9,7 +13,9 @@ namespace peridot {
 
 struct PointSet {
   std::string name;
-  std::vector<long long> globalIds;  // 0-based point ids (element id - 1), sorted, unique
+  // 0-based ids (element id - 1) of the points of this share in the set, sorted, unique. Every
+  // rank lists every set name (an empty list where none of its points is in the set).
+  std::vector<long long> globalIds;
 };
 
 struct PointCloud {
@@ -21,9 +27,10 @@ struct PointCloud {
   std::vector<PointSet> pointSets;        // mesh node sets as point sets
   // 2 for planar discretizations (points in z = 0, volume = area x thickness), else 3.
   int dimension = 3;
-  double thickness = 1.0;  // out-of-plane thickness of a 2D discretization
+  double thickness = 1.0;         // out-of-plane thickness of a 2D discretization
+  long long globalNumPoints = 0;  // the points of all shares
 
-  std::size_t size() const { return volume.size(); }
+  std::size_t size() const { return volume.size(); }  // this share's points
 };
 
 }  // namespace peridot

@@ -7,7 +7,8 @@
 
 namespace peridot {
 
-OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
+OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
+                             int dimension,
                              const std::map<std::string, std::vector<long long>>& nodeSets,
                              const Topology& topology, VariableSource& source, Timers& timers)
     : topology_(topology), source_(source), timers_(timers) {
@@ -28,16 +29,10 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
         it->variables.push_back(v);
     it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
   }
-  numPoints_ = static_cast<long long>(cloud.size());
-  dimension_ = cloud.dimension == 2 ? 2 : 3;
+  numPoints_ = topology.globalNumPoints;
+  dimension_ = dimension == 2 ? 2 : 3;
 
-  // Output order: blocks by id, points by id within a block.
-  std::vector<std::size_t> order(cloud.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return cloud.blockId[a] != cloud.blockId[b] ? cloud.blockId[a] < cloud.blockId[b]
-                                                : cloud.globalId[a] < cloud.globalId[b];
-  });
+  // TODO(bounded output): rank 0 gathers every point's id, block and position.
   int size = topology.numRanks;
   gatherCounts_.assign(size, 0);
   gatherDispls_.assign(size, 0);
@@ -46,14 +41,41 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
   for (int r = 1; r < size; ++r) gatherDispls_[r] = gatherDispls_[r - 1] + gatherCounts_[r - 1];
   std::vector<long long> ownedIds(topology.overlapGlobalId.begin(),
                                   topology.overlapGlobalId.begin() + topology.numOwned);
-  std::vector<long long> allIds(topology.rank == 0 ? static_cast<std::size_t>(numPoints_) : 0);
+  const bool root = topology.rank == 0;
+  std::vector<long long> allIds(root ? static_cast<std::size_t>(numPoints_) : 0);
   MPI_Gatherv(ownedIds.data(), numOwned, MPI_LONG_LONG, allIds.data(), gatherCounts_.data(),
               gatherDispls_.data(), MPI_LONG_LONG, 0, topology.comm);
-  if (topology.rank != 0) return;
+  std::vector<int> allBlocks(root ? static_cast<std::size_t>(numPoints_) : 0);
+  MPI_Gatherv(topology.blockId.data(), numOwned, MPI_INT, allBlocks.data(), gatherCounts_.data(),
+              gatherDispls_.data(), MPI_INT, 0, topology.comm);
+  std::vector<double> allX(root ? static_cast<std::size_t>(3 * numPoints_) : 0);
+  {
+    std::vector<int> c3(gatherCounts_), d3(gatherDispls_);
+    for (int r = 0; r < size; ++r) c3[r] *= 3, d3[r] *= 3;
+    MPI_Gatherv(topology.referencePosition.data(), 3 * numOwned, MPI_DOUBLE, allX.data(), c3.data(),
+                d3.data(), MPI_DOUBLE, 0, topology.comm);
+  }
+  std::map<std::string, std::vector<long long>> allSets;
+  for (const auto& kv : nodeSets) {
+    const int m = static_cast<int>(kv.second.size());
+    std::vector<int> c(size), dsp(size, 0);
+    MPI_Gather(&m, 1, MPI_INT, c.data(), 1, MPI_INT, 0, topology.comm);
+    for (int r = 1; r < size; ++r) dsp[r] = dsp[r - 1] + c[r - 1];
+    std::vector<long long> ids(root ? static_cast<std::size_t>(dsp[size - 1] + c[size - 1]) : 0);
+    MPI_Gatherv(kv.second.data(), m, MPI_LONG_LONG, ids.data(), c.data(), dsp.data(), MPI_LONG_LONG,
+                0, topology.comm);
+    allSets[kv.first] = std::move(ids);
+  }
+  if (!root) return;
 
+  // Output order: blocks by id, points by id within a block.
+  std::vector<std::size_t> order(allIds.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return allBlocks[a] != allBlocks[b] ? allBlocks[a] < allBlocks[b] : allIds[a] < allIds[b];
+  });
   std::map<long long, long long> positionOfId;
-  for (std::size_t p = 0; p < order.size(); ++p)
-    positionOfId[cloud.globalId[order[p]]] = static_cast<long long>(p);
+  for (std::size_t p = 0; p < order.size(); ++p) positionOfId[allIds[order[p]]] = p;
   positionOfReceived_.resize(allIds.size());
   for (std::size_t k = 0; k < allIds.size(); ++k)
     positionOfReceived_[k] = positionOfId.at(allIds[k]);
@@ -61,18 +83,18 @@ OutputManager::OutputManager(const RunConfig& config, const PointCloud& cloud,
   ExodusLayout layout;
   layout.dimension = dimension_;
   for (std::size_t p : order) {
-    layout.ids.push_back(cloud.globalId[p] + 1);
-    layout.x.push_back(cloud.x[3 * p]);
-    layout.y.push_back(cloud.x[3 * p + 1]);
-    layout.z.push_back(cloud.x[3 * p + 2]);
-    if (layout.blockIds.empty() || layout.blockIds.back() != cloud.blockId[p]) {
-      layout.blockIds.push_back(cloud.blockId[p]);
-      layout.blockNames.push_back(cloud.blockNames.at(cloud.blockId[p]));
+    layout.ids.push_back(allIds[p] + 1);
+    layout.x.push_back(allX[3 * p]);
+    layout.y.push_back(allX[3 * p + 1]);
+    layout.z.push_back(allX[3 * p + 2]);
+    if (layout.blockIds.empty() || layout.blockIds.back() != allBlocks[p]) {
+      layout.blockIds.push_back(allBlocks[p]);
+      layout.blockNames.push_back(blockNames.at(allBlocks[p]));
       layout.blockCounts.push_back(0);
     }
     ++layout.blockCounts.back();
   }
-  for (const auto& kv : nodeSets) {
+  for (const auto& kv : allSets) {
     ExodusLayout::Set s;
     s.name = kv.first;
     for (long long g : kv.second) s.positions.push_back(static_cast<int>(positionOfId.at(g)));

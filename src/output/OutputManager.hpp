@@ -10,7 +10,6 @@
 
 #include "core/Timers.hpp"
 #include "deck/RunConfig.hpp"
-#include "discretization/PointCloud.hpp"
 #include "output/ExodusWriter.hpp"
 #include "parallel/Topology.hpp"
 
@@ -29,8 +28,10 @@ class VariableSource {
 
 class OutputManager {
  public:
-  OutputManager(const RunConfig& config, const PointCloud& cloud,
-                const std::map<std::string, std::vector<long long>>& nodeSets,
+  // Collective. `nodeSets`: every set name, with the global ids of its owned points (sorted);
+  // the mesh (positions, blocks) comes from the topology's owned points.
+  OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
+                int dimension, const std::map<std::string, std::vector<long long>>& nodeSets,
                 const Topology& topology, VariableSource& source, Timers& timers);
   ~OutputManager();
   // Writes the records due at `step` (step 0 is always written).

@@ -128,10 +128,8 @@ LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horiz
   return out;
 }
 
-}  // namespace
-
-Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
-                       const TopologyOptions& options, MPI_Comm comm) {
+Topology buildFromReplicated(const PointCloud& cloud, const std::vector<double>& horizon,
+                             const TopologyOptions& options, MPI_Comm comm) {
   TopologyOptions opt = options;
   if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap) {
     // Partial volumes: the search reaches half a cell diagonal beyond the horizon.
@@ -276,6 +274,76 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   t.ghostMap3 = makeMap(expand3(ghostIds));
   t.ghostImport = Teuchos::rcp(new Import(t.ownedMap, t.ghostMap));
   t.ghostImport3 = Teuchos::rcp(new Import(t.ownedMap3, t.ghostMap3));
+  t.referencePosition.resize(3 * static_cast<std::size_t>(t.numOverlap));
+  t.volume.resize(t.numOverlap);
+  t.horizon.resize(t.numOverlap);
+  t.blockId.resize(t.numOverlap);
+  for (int k = 0; k < t.numOverlap; ++k) {
+    const std::size_t p = t.overlapCloudIndex[k];
+    const double* shift = t.shiftOf(k);
+    for (int d = 0; d < 3; ++d) t.referencePosition[3 * k + d] = cloud.x[3 * p + d] + shift[d];
+    t.volume[k] = cloud.volume[p];
+    t.horizon[k] = horizon[p];
+    t.blockId[k] = cloud.blockId[p];
+  }
+  for (const auto& set : cloud.pointSets) {
+    t.pointSetNames.push_back(set.name);
+    std::vector<int> owned;
+    for (int i = 0; i < t.numOwned; ++i)
+      if (std::binary_search(set.globalIds.begin(), set.globalIds.end(), t.overlapGlobalId[i]))
+        owned.push_back(i);
+    t.ownedPointSets.push_back(std::move(owned));
+  }
+  return t;
+}
+
+}  // namespace
+
+// TODO(distributed set-up): gathers the shares into one cloud on every rank.
+Topology buildTopology(const PointCloud& share, const std::vector<double>& shareHorizon,
+                       const TopologyOptions& options, MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  const int n = static_cast<int>(share.size());
+  std::vector<int> counts(size), displs(size, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+  const int total = displs[size - 1] + counts[size - 1];
+  PointCloud cloud;
+  cloud.blockNames = share.blockNames;
+  cloud.dimension = share.dimension;
+  cloud.thickness = share.thickness;
+  cloud.globalNumPoints = total;
+  cloud.volume.resize(total);
+  cloud.blockId.resize(total);
+  cloud.globalId.resize(total);
+  std::vector<double> horizon(total);
+  MPI_Allgatherv(share.volume.data(), n, MPI_DOUBLE, cloud.volume.data(), counts.data(),
+                 displs.data(), MPI_DOUBLE, comm);
+  MPI_Allgatherv(shareHorizon.data(), n, MPI_DOUBLE, horizon.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, comm);
+  MPI_Allgatherv(share.blockId.data(), n, MPI_INT, cloud.blockId.data(), counts.data(),
+                 displs.data(), MPI_INT, comm);
+  MPI_Allgatherv(share.globalId.data(), n, MPI_LONG_LONG, cloud.globalId.data(), counts.data(),
+                 displs.data(), MPI_LONG_LONG, comm);
+  std::vector<int> counts3(size), displs3(size);
+  for (int r = 0; r < size; ++r) counts3[r] = 3 * counts[r], displs3[r] = 3 * displs[r];
+  cloud.x.resize(3 * static_cast<std::size_t>(total));
+  MPI_Allgatherv(share.x.data(), 3 * n, MPI_DOUBLE, cloud.x.data(), counts3.data(), displs3.data(),
+                 MPI_DOUBLE, comm);
+  for (const auto& set : share.pointSets) {
+    const int m = static_cast<int>(set.globalIds.size());
+    std::vector<int> c(size), dsp(size, 0);
+    MPI_Allgather(&m, 1, MPI_INT, c.data(), 1, MPI_INT, comm);
+    for (int r = 1; r < size; ++r) dsp[r] = dsp[r - 1] + c[r - 1];
+    PointSet all{set.name, std::vector<long long>(dsp[size - 1] + c[size - 1])};
+    MPI_Allgatherv(set.globalIds.data(), m, MPI_LONG_LONG, all.globalIds.data(), c.data(),
+                   dsp.data(), MPI_LONG_LONG, comm);
+    std::sort(all.globalIds.begin(), all.globalIds.end());
+    cloud.pointSets.push_back(std::move(all));
+  }
+  Topology t = buildFromReplicated(cloud, horizon, options, comm);
+  t.overlapCloudIndex.clear();
   return t;
 }
 

@@ -1,12 +1,14 @@
 #pragma once
-// Who owns which point, which points each rank sees as ghosts, and the bonds of every owned
-// point as CSR lists in local overlap indices. Built once from the replicated point cloud.
+// Who owns which point, which points each rank sees as ghosts, the bonds of every owned point
+// as CSR lists in local overlap indices, and the reference data of the points a rank sees.
+// Built once from the ranks' shares of the point cloud: every rank holds O(owned + ghosts).
 #include <mpi.h>
 
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "discretization/Discretization.hpp"
@@ -27,7 +29,17 @@ struct Topology {
   long long globalNumPoints = 0;
   long long globalNumBonds = 0;                // one-sided bond entries, all ranks
   std::vector<GlobalOrdinal> overlapGlobalId;  // per overlap index
-  std::vector<std::size_t> overlapCloudIndex;  // per overlap index, index into the PointCloud
+  std::vector<std::size_t> overlapCloudIndex;  // set-up only (TODO: goes with the shim)
+  // Reference data per overlap point (owned, ghosts, images; an image's position includes its
+  // shift): what the discretization said of the point, moved to where it is used.
+  std::vector<double> referencePosition;  // 3 per overlap point
+  std::vector<double> volume;             // per overlap point
+  std::vector<double> horizon;            // per overlap point
+  std::vector<int> blockId;               // per overlap point, the mesh block id
+  // The cloud's point sets (same order and names as PointCloud::pointSets), as the owned local
+  // indices of their points, sorted.
+  std::vector<std::string> pointSetNames;
+  std::vector<std::vector<int>> ownedPointSets;
   // Periodic images: overlap indices [numOwned + numGhosts, numOverlap) are copies of a real
   // point (owned or ghost) shifted by a multiple of the periodic box; refreshed after ghosts.
   int numGhosts = 0;
@@ -63,7 +75,10 @@ struct TopologyOptions {
   bool weightByBondCount = true;  // second Zoltan pass weighted by bonds per point
 };
 
-// `horizon` has one value per cloud point.
+// Collective. `cloud` is this rank's share of the points (see PointCloud; any distribution in
+// which every point is on exactly one rank) and `horizon` has one value per point of the share.
+// The points move to their owners (Zoltan RCB, weighted by bonds), and each rank finds the
+// neighbours of its owned points among the points within reach of its box (a halo exchange).
 Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
                        const TopologyOptions& options, MPI_Comm comm);
 

@@ -49,9 +49,8 @@ struct Problem {
     double* hz = fields->node("Horizon", 1);
     fields->markPosition("Coordinates");
     for (int k = 0; k < topology.numOverlap; ++k) {
-      const std::size_t p = topology.overlapCloudIndex[k];
-      const double* shift = topology.shiftOf(k);
-      for (int d = 0; d < 3; ++d) x[3 * k + d] = y[3 * k + d] = cloud.x[3 * p + d] + shift[d];
+      for (int d = 0; d < 3; ++d)
+        x[3 * k + d] = y[3 * k + d] = topology.referencePosition[3 * k + d];
       v[k] = volume;
       hz[k] = horizon;
     }

@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 
+#include "../common/CloudShare.hpp"
 #include "fields/FieldManager.hpp"
 #include "parallel/Topology.hpp"
 
@@ -53,7 +54,7 @@ void expectListsMatch(const PointCloud& cloud, const std::vector<double>& h,
                       const std::vector<BondFilter>& filters) {
   TopologyOptions options;
   options.bondFilters = &filters;
-  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, options, MPI_COMM_WORLD);
   const auto expected = bruteForce(cloud, h, filters);
   long long owned = t.numOwned, total = 0, bonds = 0;
   MPI_Allreduce(&owned, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -82,7 +83,7 @@ TEST(Topology, CellOverlapListsMatchBruteForce) {
   std::vector<double> h(cloud.size(), 0.08);
   TopologyOptions options;
   options.rule.kind = NeighborhoodRule::Kind::CellOverlap;
-  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, options, MPI_COMM_WORLD);
   std::map<long long, std::vector<long long>> expected;
   long long bonds = 0, beyond = 0;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
@@ -120,13 +121,13 @@ TEST(Topology, VariableHorizonListsAreUnionsWithSides) {
   PointCloud cloud = randomCloud(1200, 11);
   std::vector<double> h(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) h[i] = 0.05 + 0.08 * cloud.x[3 * i];
-  Topology t = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
   std::map<long long, std::size_t> indexOf;
   for (std::size_t i = 0; i < cloud.size(); ++i) indexOf[cloud.globalId[i]] = i;
   ASSERT_FALSE(t.bondSides.empty() && t.numOwned > 50);
   long long oneSided = 0;
   for (int i = 0; i < t.numOwned; ++i) {
-    const std::size_t ci = t.overlapCloudIndex[i];
+    const std::size_t ci = indexOf.at(t.overlapGlobalId[i]);
     std::vector<long long> expected;
     for (std::size_t j = 0; j < cloud.size(); ++j) {
       if (j == ci) continue;
@@ -184,7 +185,7 @@ TEST(Topology, BondFiltersMatchBruteForce) {
 TEST(Topology, GhostExchangeCopiesOwnerValues) {
   PointCloud cloud = randomCloud(2000, 5);
   std::vector<double> h(cloud.size(), 0.08);
-  Topology t = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
   FieldManager fields(t);
   double* s = fields.node("Scalar", 1);
   double* v = fields.node("Vector", 3);
@@ -213,7 +214,7 @@ TEST(Topology, WeightedPartitionBalancesBonds) {
   PointCloud cloud = randomCloud(3000, 9);
   for (std::size_t i = 0; i < cloud.size(); i += 2) cloud.x[3 * i] *= 0.3;
   std::vector<double> h(cloud.size(), 0.08);
-  Topology t = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, TopologyOptions{}, MPI_COMM_WORLD);
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   long long mine = t.numBonds() + t.numOwned, maxWork = 0, total = 0;
@@ -235,12 +236,12 @@ TEST(Topology, PeriodicImagesMatchMinimumImageBruteForce) {
   TopologyOptions options;
   options.periodic.periodic[0] = options.periodic.periodic[1] = true;
   options.periodic.upper[0] = options.periodic.upper[1] = 1.0;
-  Topology t = buildTopology(cloud, h, options, MPI_COMM_WORLD);
+  Topology t = testing::topologyOfWhole(cloud, h, options, MPI_COMM_WORLD);
   FieldManager fields(t);
   double* x = fields.node("Model_Coordinates", 3);
   fields.markPosition("Model_Coordinates");
   for (int k = 0; k < t.numOwned; ++k)
-    for (int d = 0; d < 3; ++d) x[3 * k + d] = cloud.x[3 * t.overlapCloudIndex[k] + d];
+    for (int d = 0; d < 3; ++d) x[3 * k + d] = t.referencePosition[3 * k + d];
   fields.refreshGhosts("Model_Coordinates");
   long long bonds = 0;
   for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -62,7 +62,7 @@ const std::string kGenerator2D =
 TEST(PlanarDiscretization, GeneratorLayoutIsCellCentredXFastest) {
   const auto c = config(kGenerator2D);
   EXPECT_EQ(c.dimension, 2);
-  const PointCloud cloud = buildPointCloud(c);
+  const PointCloud cloud = buildWholePointCloud(c);
   ASSERT_EQ(cloud.size(), 6u);
   EXPECT_EQ(cloud.dimension, 2);
   EXPECT_EQ(cloud.thickness, 0.5);
@@ -86,7 +86,7 @@ TEST(PlanarDiscretization, ThicknessDefaultsToOne) {
       "  TensorProduct2DMeshGenerator:\n"
       "    X Origin: 0.0\n    Y Origin: 0.0\n    X Length: 2.0\n    Y Length: 2.0\n"
       "    Number Points X: 2\n    Number Points Y: 4\n");
-  const PointCloud cloud = buildPointCloud(c);
+  const PointCloud cloud = buildWholePointCloud(c);
   EXPECT_EQ(cloud.thickness, 1.0);
   EXPECT_DOUBLE_EQ(cloud.volume[0], 0.5);
 }
@@ -98,7 +98,7 @@ int centreNeighbours(const std::string& neighborhood, double horizon) {
              "  TensorProduct2DMeshGenerator:\n"
              "    X Origin: 0.0\n    Y Origin: 0.0\n    X Length: 9.0\n    Y Length: 9.0\n"
              "    Number Points X: 9\n    Number Points Y: 9\n");
-  const PointCloud cloud = buildPointCloud(c);
+  const PointCloud cloud = buildWholePointCloud(c);
   std::vector<double> h(cloud.size(), horizon);
   NeighborSearchInput in;
   in.x = cloud.x.data();
@@ -129,7 +129,7 @@ TEST(PlanarDiscretization, TextFileInTwoDimensions) {
   const auto c = config("  Type: Text File\n  Input Mesh File: " + file.path +
                         "\n  Dimension: 2\n  Thickness: 0.1\n");
   EXPECT_EQ(c.dimension, 2);
-  const PointCloud cloud = buildPointCloud(c);
+  const PointCloud cloud = buildWholePointCloud(c);
   EXPECT_EQ(cloud.dimension, 2);
   EXPECT_EQ(cloud.thickness, 0.1);
   ASSERT_EQ(cloud.size(), 3u);
@@ -138,7 +138,7 @@ TEST(PlanarDiscretization, TextFileInTwoDimensions) {
   EXPECT_EQ(cloud.blockId, (std::vector<int>{1, 1, 2}));
   // Without Dimension the same file is a 3D cloud with the fifth column as volume.
   const PointCloud solid =
-      buildPointCloud(config("  Type: Text File\n  Input Mesh File: " + file.path + "\n"));
+      buildWholePointCloud(config("  Type: Text File\n  Input Mesh File: " + file.path + "\n"));
   EXPECT_EQ(solid.dimension, 3);
   EXPECT_DOUBLE_EQ(solid.volume[0], 0.25);
 }
@@ -151,7 +151,7 @@ TEST(PlanarDiscretization, TextFileOffThePlaneIsAnError) {
   }
   const auto c =
       config("  Type: Text File\n  Input Mesh File: " + file.path + "\n  Dimension: 2\n");
-  expectInputError([&] { buildPointCloud(c); },
+  expectInputError([&] { buildWholePointCloud(c); },
                    {"Discretization -> Input Mesh File", "line 3", "z is 0.2", "z = 0"});
 }
 
@@ -171,7 +171,7 @@ TEST(PlanarDiscretization, ThicknessInThreeDimensionsIsAnError) {
   // An Exodus mesh tells its dimension when read: WaveInBar is 3D.
   const auto c = config("  Type: Exodus\n  Input Mesh File: " + std::string(PERIDOT_SHARED_DIR) +
                         "/peridigm-cases/WaveInBar/WaveInBar.g\n  Thickness: 2.0\n");
-  expectInputError([&] { buildPointCloud(c); },
+  expectInputError([&] { buildWholePointCloud(c); },
                    {"Discretization -> Thickness", "WaveInBar.g", "is 3D"});
 }
 
