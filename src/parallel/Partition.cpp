@@ -10,11 +10,11 @@ namespace peridot {
 
 namespace {
 
-// The slice of the cloud this rank hands to Zoltan: a contiguous block of point indices.
+// The points this rank hands to Zoltan (its share); Zoltan's global ids are begin + index.
 struct Slice {
   const std::vector<double>* x;
   const std::vector<double>* weights;
-  std::size_t begin, end;
+  std::size_t begin, end;  // global numbering of this rank's points: [begin, end)
 };
 
 int numObjects(void* data, int* ierr) {
@@ -26,10 +26,10 @@ int numObjects(void* data, int* ierr) {
 void objectList(void* data, int, int, ZOLTAN_ID_PTR globalIds, ZOLTAN_ID_PTR localIds, int wgtDim,
                 float* weights, int* ierr) {
   auto* s = static_cast<Slice*>(data);
-  for (std::size_t i = s->begin; i < s->end; ++i) {
-    globalIds[i - s->begin] = static_cast<ZOLTAN_ID_TYPE>(i);
-    localIds[i - s->begin] = static_cast<ZOLTAN_ID_TYPE>(i - s->begin);
-    if (wgtDim > 0) weights[i - s->begin] = static_cast<float>((*s->weights)[i]);
+  for (std::size_t i = 0; i < s->end - s->begin; ++i) {
+    globalIds[i] = static_cast<ZOLTAN_ID_TYPE>(s->begin + i);
+    localIds[i] = static_cast<ZOLTAN_ID_TYPE>(i);
+    if (wgtDim > 0) weights[i] = static_cast<float>((*s->weights)[i]);
   }
   *ierr = ZOLTAN_OK;
 }
@@ -39,11 +39,11 @@ int numGeometry(void*, int* ierr) {
   return 3;
 }
 
-void geometry(void* data, int, int, int numObj, ZOLTAN_ID_PTR globalIds, ZOLTAN_ID_PTR, int,
+void geometry(void* data, int, int, int numObj, ZOLTAN_ID_PTR, ZOLTAN_ID_PTR localIds, int,
               double* coords, int* ierr) {
   auto* s = static_cast<Slice*>(data);
   for (int k = 0; k < numObj; ++k) {
-    const std::size_t i = globalIds[k];
+    const std::size_t i = localIds[k];
     for (int d = 0; d < 3; ++d) coords[3 * k + d] = (*s->x)[3 * i + d];
   }
   *ierr = ZOLTAN_OK;
@@ -82,19 +82,45 @@ std::vector<int> partitionAlongCurve(const std::vector<double>& x,
   return owner;
 }
 
-std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector<double>& weights,
-                                 MPI_Comm comm) {
+std::vector<int> partitionShare(const std::vector<double>& x, const std::vector<double>& weights,
+                                MPI_Comm comm) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   const std::size_t n = x.size() / 3;
-  std::vector<int> owner(n, 0);
+  std::vector<int> owner(n, rank);
   if (size == 1) return owner;
+  long long local = static_cast<long long>(n), begin = 0, total = 0;
+  MPI_Exscan(&local, &begin, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  if (rank == 0) begin = 0;
+  MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  // A rank that owns no point passes no weights: whether the partition is weighted is the
+  // ranks' common decision.
+  int weighted = weights.empty() ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &weighted, 1, MPI_INT, MPI_MAX, comm);
   // Zoltan's RCB refuses to cut fewer points than parts; a handful of points per rank needs no
-  // balancing anyway, so split them along the space-filling curve instead.
-  if (n < static_cast<std::size_t>(4 * size)) return partitionAlongCurve(x, weights, size);
+  // balancing anyway, so split them along the space-filling curve instead (gathering them is
+  // O(ranks)).
+  if (total < 4LL * size) {
+    std::vector<int> counts(size), displs(size, 0);
+    const int mine = static_cast<int>(n);
+    MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+    for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+    std::vector<double> allX(3 * static_cast<std::size_t>(total)), allW;
+    std::vector<int> counts3(size), displs3(size);
+    for (int r = 0; r < size; ++r) counts3[r] = 3 * counts[r], displs3[r] = 3 * displs[r];
+    MPI_Allgatherv(x.data(), 3 * mine, MPI_DOUBLE, allX.data(), counts3.data(), displs3.data(),
+                   MPI_DOUBLE, comm);
+    if (weighted) {
+      allW.resize(static_cast<std::size_t>(total));
+      MPI_Allgatherv(weights.data(), mine, MPI_DOUBLE, allW.data(), counts.data(), displs.data(),
+                     MPI_DOUBLE, comm);
+    }
+    const std::vector<int> all = partitionAlongCurve(allX, allW, size);
+    return std::vector<int>(all.begin() + displs[rank], all.begin() + displs[rank] + mine);
+  }
 
-  Slice slice{&x, &weights, n * rank / size, n * (rank + 1) / size};
+  Slice slice{&x, &weights, static_cast<std::size_t>(begin), static_cast<std::size_t>(begin) + n};
   float version = 0;
   Zoltan_Initialize(0, nullptr, &version);
   Zoltan_Struct* zz = Zoltan_Create(comm);
@@ -103,7 +129,7 @@ std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector
   Zoltan_Set_Param(zz, "NUM_GID_ENTRIES", "1");
   Zoltan_Set_Param(zz, "NUM_LID_ENTRIES", "1");
   Zoltan_Set_Param(zz, "RETURN_LISTS", "PARTS");
-  Zoltan_Set_Param(zz, "OBJ_WEIGHT_DIM", weights.empty() ? "0" : "1");
+  Zoltan_Set_Param(zz, "OBJ_WEIGHT_DIM", weighted ? "1" : "0");
   Zoltan_Set_Param(zz, "RCB_REUSE", "0");
   Zoltan_Set_Num_Obj_Fn(zz, numObjects, &slice);
   Zoltan_Set_Obj_List_Fn(zz, objectList, &slice);
@@ -124,20 +150,10 @@ std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector
   }
   (void)changes;
   // With RETURN_LISTS=PARTS the export lists hold the part of every local object.
-  std::vector<int> local(slice.end - slice.begin, rank);
-  for (int k = 0; k < numExport; ++k) local[exportLocal[k]] = exportParts[k];
+  for (int k = 0; k < numExport; ++k) owner[exportLocal[k]] = exportParts[k];
   Zoltan_LB_Free_Part(&importGlobal, &importLocal, &importProcs, &importParts);
   Zoltan_LB_Free_Part(&exportGlobal, &exportLocal, &exportProcs, &exportParts);
   Zoltan_Destroy(&zz);
-
-  std::vector<int> counts(size), displs(size);
-  for (int r = 0; r < size; ++r) {
-    const std::size_t b = n * r / size, e = n * (r + 1) / size;
-    counts[r] = static_cast<int>(e - b);
-    displs[r] = static_cast<int>(b);
-  }
-  MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_INT, owner.data(), counts.data(),
-                 displs.data(), MPI_INT, comm);
   return owner;
 }
 

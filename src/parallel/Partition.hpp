@@ -1,15 +1,16 @@
 #pragma once
-// Zoltan recursive coordinate bisection of a point cloud known on every rank.
+// Zoltan recursive coordinate bisection of a point cloud distributed over the ranks.
 #include <mpi.h>
 
 #include <vector>
 
 namespace peridot {
 
-// Returns, for every point of the cloud (replicated on all ranks), the rank that owns it.
-// `weights` (empty = unweighted) gives each point's cost, e.g. its bond count.
-std::vector<int> partitionPoints(const std::vector<double>& x, const std::vector<double>& weights,
-                                 MPI_Comm comm);
+// Collective. Each rank passes its share of the points (`x`, 3 per point) and gets back the
+// rank that is to own each of them. `weights` (empty = unweighted, else one per point of the
+// share) gives each point's cost, e.g. its bond count.
+std::vector<int> partitionShare(const std::vector<double>& x, const std::vector<double>& weights,
+                                MPI_Comm comm);
 
 // Splits the points into `numParts` contiguous pieces of the Morton curve with equal weight.
 std::vector<int> partitionAlongCurve(const std::vector<double>& x,

@@ -2,7 +2,6 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -11,130 +10,140 @@
 #include "neighbor/NeighborSearch.hpp"
 #include "neighbor/PartialVolume.hpp"
 #include "parallel/Partition.hpp"
+#include "parallel/PointExchange.hpp"
 
 namespace peridot {
 
 namespace {
 
-// A candidate neighbour: a cloud point, possibly shifted to one of its periodic images. The
-// shift code c in 0..26 stands for (c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1) box lengths.
-constexpr int kNoShift = 13;
-inline unsigned long long packed(std::size_t index, int code) { return index * 27ull + code; }
-inline std::size_t indexOf(unsigned long long key) { return static_cast<std::size_t>(key / 27); }
-inline int codeOf(unsigned long long key) { return static_cast<int>(key % 27); }
-inline void shiftVector(int code, const PeriodicBox& box, double* shift) {
-  const int s[3] = {code % 3 - 1, code / 3 % 3 - 1, code / 9 - 1};
-  for (int d = 0; d < 3; ++d) shift[d] = s[d] * (box.upper[d] - box.lower[d]);
-}
-
-struct LocalLists {
-  std::vector<std::size_t> owned;      // cloud indices, SFC order
-  std::vector<long long> offsets;      // per owned point
-  std::vector<std::size_t> neighbors;  // packed (cloud index, shift code)
+// What every rank must agree on before the search: global extent, reach, horizon variation.
+struct GlobalFacts {
+  double lo[3], hi[3];  // bounding box of all points
+  double reach = 0;     // the largest search reach of any point
+  bool differentHorizons = false;
+  double boxLength[3] = {0, 0, 0};  // periodic box
 };
 
-LocalLists searchOwned(const PointCloud& cloud, const std::vector<double>& horizon,
-                       const std::vector<int>& owner, int rank, const TopologyOptions& opt) {
-  const std::size_t n = cloud.size();
-  LocalLists out;
-  double gLo[3], gHi[3], lo[3], hi[3];
+GlobalFacts globalFacts(const PointBatch& points, const TopologyOptions& opt, MPI_Comm comm) {
+  GlobalFacts g;
+  double mins[5], maxs[5];  // x, y, z, horizon, -(...) trick avoided: two reductions
+  for (int k = 0; k < 5; ++k) {
+    mins[k] = std::numeric_limits<double>::max();
+    maxs[k] = std::numeric_limits<double>::lowest();
+  }
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    for (int d = 0; d < 3; ++d) {
+      mins[d] = std::min(mins[d], points.x[3 * p + d]);
+      maxs[d] = std::max(maxs[d], points.x[3 * p + d]);
+    }
+    mins[3] = std::min(mins[3], points.horizon[p]);
+    maxs[3] = std::max(maxs[3], points.horizon[p]);
+    maxs[4] = std::max(maxs[4], searchReach(opt.rule, points.horizon[p]));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, mins, 5, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, maxs, 5, MPI_DOUBLE, MPI_MAX, comm);
   for (int d = 0; d < 3; ++d) {
-    gLo[d] = lo[d] = std::numeric_limits<double>::max();
-    gHi[d] = hi[d] = std::numeric_limits<double>::lowest();
+    g.lo[d] = mins[d];
+    g.hi[d] = maxs[d];
+    g.boxLength[d] = opt.periodic.upper[d] - opt.periodic.lower[d];
   }
-  double reach = 0;
-  const bool unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox &&
-                               std::adjacent_find(horizon.begin(), horizon.end(),
-                                                  std::not_equal_to<double>()) != horizon.end();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      gLo[d] = std::min(gLo[d], cloud.x[3 * i + d]);
-      gHi[d] = std::max(gHi[d], cloud.x[3 * i + d]);
-    }
-    // With differing horizons a neighbour may reach an owned point from its own horizon.
-    if (unionOfHorizons) reach = std::max(reach, searchReach(opt.rule, horizon[i]));
-    if (owner[i] != rank) continue;
-    out.owned.push_back(i);
-    reach = std::max(reach, searchReach(opt.rule, horizon[i]));
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], cloud.x[3 * i + d]);
-      hi[d] = std::max(hi[d], cloud.x[3 * i + d]);
-    }
-  }
-  // Space-filling-curve order of the owned points (ties broken by global id).
-  std::vector<unsigned long long> key(n, 0);
-  for (std::size_t i : out.owned) key[i] = mortonKey(&cloud.x[3 * i], gLo, gHi);
-  std::sort(out.owned.begin(), out.owned.end(), [&](std::size_t a, std::size_t b) {
-    return key[a] != key[b] ? key[a] < key[b] : cloud.globalId[a] < cloud.globalId[b];
-  });
+  g.reach = maxs[4];
+  g.differentHorizons = mins[3] != maxs[3];
+  return g;
+}
 
-  // Candidates: the points, and their periodic images, that can be within reach of an owned
-  // point.
-  std::vector<unsigned long long> candidates;
-  std::vector<double> cx;
-  std::vector<int> codes = {kNoShift};
-  if (opt.periodic.any()) {
-    codes.clear();
-    for (int c = 0; c < 27; ++c) {
-      const int s[3] = {c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1};
-      bool allowed = true;
-      for (int d = 0; d < 3; ++d) allowed = allowed && (s[d] == 0 || opt.periodic.periodic[d]);
-      if (allowed) codes.push_back(c);
-    }
-  }
-  for (int code : codes) {
-    double shift[3] = {0, 0, 0};
-    shiftVector(code, opt.periodic, shift);
-    for (std::size_t i = 0; i < n; ++i) {
-      bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d) {
-        const double xd = cloud.x[3 * i + d] + shift[d];
-        inside = xd >= lo[d] - reach && xd <= hi[d] + reach;
-      }
-      if (!inside) continue;
-      candidates.push_back(packed(i, code));
-      for (int d = 0; d < 3; ++d) cx.push_back(cloud.x[3 * i + d] + shift[d]);
-    }
-  }
-  std::vector<double> ch(candidates.size());
-  std::vector<int> cb(candidates.size());
+// The owned points of this rank and the candidates of their search: the owned points
+// themselves, then the halo (points of other ranks, and periodic images, within reach).
+struct Neighbourhoods {
+  PointBatch owned;
+  HaloBatch halo;
+  std::vector<long long> offsets;      // per owned point
+  std::vector<std::size_t> neighbors;  // candidate indices: owned p is p, halo h is numOwned + h
+};
+
+Neighbourhoods search(PointBatch owned, const GlobalFacts& g, const TopologyOptions& opt,
+                      const std::vector<int>& codes, int dimension, double thickness,
+                      MPI_Comm comm) {
+  Neighbourhoods out;
+  out.owned = std::move(owned);
+  out.halo = exchangeHalo(out.owned, g.reach, codes, g.boxLength, comm);
+  const std::size_t numOwned = out.owned.size(), numHalo = out.halo.points.size();
+  const std::size_t n = numOwned + numHalo;
+  std::vector<double> cx(3 * n), ch(n);
+  std::vector<int> cb(n);
   const bool overlap = opt.rule.kind == NeighborhoodRule::Kind::CellOverlap;
-  std::vector<double> ce(overlap ? candidates.size() : 0);
-  std::unordered_map<std::size_t, std::size_t> candidateOf;
-  candidateOf.reserve(out.owned.size() * 2);
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const std::size_t i = indexOf(candidates[k]);
-    ch[k] = horizon[i];
-    cb[k] = cloud.blockId[i];
-    if (overlap) ce[k] = cellEdge(cloud.volume[i], cloud.dimension, cloud.thickness);
-    if (owner[i] == rank && codeOf(candidates[k]) == kNoShift) candidateOf[i] = k;
+  std::vector<double> ce(overlap ? n : 0);
+  auto fill = [&](std::size_t k, const PointBatch& from, std::size_t p, int code) {
+    double shift[3];
+    shiftVector(code, g.boxLength, shift);
+    for (int d = 0; d < 3; ++d) cx[3 * k + d] = from.x[3 * p + d] + shift[d];
+    ch[k] = from.horizon[p];
+    cb[k] = from.blockId[p];
+    if (overlap) ce[k] = cellEdge(from.volume[p], dimension, thickness);
+  };
+  for (std::size_t p = 0; p < numOwned; ++p) {
+    for (int d = 0; d < 3; ++d) cx[3 * p + d] = out.owned.x[3 * p + d];
+    ch[p] = out.owned.horizon[p];
+    cb[p] = out.owned.blockId[p];
+    if (overlap) ce[p] = cellEdge(out.owned.volume[p], dimension, thickness);
   }
-  std::vector<std::size_t> queries;
-  queries.reserve(out.owned.size());
-  for (std::size_t i : out.owned) queries.push_back(candidateOf[i]);
+  for (std::size_t h = 0; h < numHalo; ++h)
+    fill(numOwned + h, out.halo.points, h, out.halo.shift[h]);
+  std::vector<std::size_t> queries(numOwned);
+  std::iota(queries.begin(), queries.end(), std::size_t{0});
   NeighborSearchInput in;
   in.x = cx.data();
-  in.numPoints = candidates.size();
+  in.numPoints = n;
   in.horizon = ch.data();
   in.blockId = cb.data();
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
-  in.unionOfHorizons = unionOfHorizons;
+  in.unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox && g.differentHorizons;
   in.cellEdge = overlap ? ce.data() : nullptr;
-  // Candidate indices become packed keys in place: one 8-byte word per bond at the peak.
   findNeighbors(in, queries, out.offsets, out.neighbors);
-  for (auto& k : out.neighbors) k = candidates[k];
   return out;
 }
 
-Topology buildFromReplicated(const PointCloud& cloud, const std::vector<double>& horizon,
-                             const TopologyOptions& options, MPI_Comm comm) {
+PointBatch batchOf(const PointCloud& cloud, const std::vector<double>& horizon) {
+  PointBatch b;
+  b.globalId = cloud.globalId;
+  b.x = cloud.x;
+  b.volume = cloud.volume;
+  b.horizon = horizon;
+  b.blockId = cloud.blockId;
+  // Set membership per point, from the share's sorted id lists.
+  std::vector<std::vector<int>> setsOf(cloud.size());
+  std::unordered_map<long long, std::size_t> indexOf;
+  indexOf.reserve(2 * cloud.size());
+  for (std::size_t p = 0; p < cloud.size(); ++p) indexOf[cloud.globalId[p]] = p;
+  for (std::size_t s = 0; s < cloud.pointSets.size(); ++s)
+    for (long long gid : cloud.pointSets[s].globalIds) {
+      auto it = indexOf.find(gid);
+      if (it != indexOf.end()) setsOf[it->second].push_back(static_cast<int>(s));
+    }
+  b.setOffsets.assign(1, 0);
+  for (std::size_t p = 0; p < cloud.size(); ++p) {
+    b.setIndex.insert(b.setIndex.end(), setsOf[p].begin(), setsOf[p].end());
+    b.setOffsets.push_back(static_cast<int>(b.setIndex.size()));
+  }
+  return b;
+}
+
+}  // namespace
+
+Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
+                       const TopologyOptions& options, MPI_Comm comm) {
   TopologyOptions opt = options;
+  Topology t;
+  t.comm = comm;
+  MPI_Comm_rank(comm, &t.rank);
+  MPI_Comm_size(comm, &t.numRanks);
+  PointBatch points = batchOf(cloud, horizon);
+  const GlobalFacts facts0 = globalFacts(points, opt, comm);
   if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap) {
     // Partial volumes: the search reaches half a cell diagonal beyond the horizon.
-    if (std::adjacent_find(horizon.begin(), horizon.end(), std::not_equal_to<double>()) !=
-        horizon.end()) {
+    if (facts0.differentHorizons) {
       throw InputError("Discretization -> Partial Volumes",
                        "needs one horizon for every point (the blocks' horizons differ)");
     }
@@ -145,109 +154,188 @@ Topology buildFromReplicated(const PointCloud& cloud, const std::vector<double>&
                    cellOverlapReach(cellEdge(cloud.volume[i], cloud.dimension, cloud.thickness),
                                     cloud.dimension));
     }
+    MPI_Allreduce(MPI_IN_PLACE, &opt.rule.overlapReach, 1, MPI_DOUBLE, MPI_MAX, comm);
   }
-  Topology t;
-  t.comm = comm;
-  MPI_Comm_rank(comm, &t.rank);
-  MPI_Comm_size(comm, &t.numRanks);
-  const std::size_t n = cloud.size();
-  t.globalNumPoints = static_cast<long long>(n);
-
-  std::vector<int> owner = partitionPoints(cloud.x, {}, comm);
-  LocalLists lists = searchOwned(cloud, horizon, owner, t.rank, opt);
-  if (t.numRanks > 1 && opt.weightByBondCount) {
-    // Rebalance with each point weighted by its work (1 + its bonds), then search again.
-    std::vector<double> weight(n, 0.0);
-    for (std::size_t k = 0; k < lists.owned.size(); ++k)
-      weight[lists.owned[k]] = 1.0 + static_cast<double>(lists.offsets[k + 1] - lists.offsets[k]);
-    MPI_Allreduce(MPI_IN_PLACE, weight.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
-    lists = LocalLists();  // free the first lists before the second search
-    owner = partitionPoints(cloud.x, weight, comm);
-    lists = searchOwned(cloud, horizon, owner, t.rank, opt);
-  }
-
-  t.numOwned = static_cast<int>(lists.owned.size());
-  t.overlapCloudIndex = lists.owned;
-  // Ghosts: neighbours owned elsewhere, and the real points behind periodic images, sorted by
-  // global id. Images come last, sorted by (global id, shift).
-  std::vector<std::size_t> ghosts;
-  std::vector<unsigned long long> images;
-  for (std::size_t key : lists.neighbors) {
-    const std::size_t j = indexOf(key);
-    if (owner[j] != t.rank) ghosts.push_back(j);
-    if (codeOf(key) != kNoShift) images.push_back(key);
-  }
-  auto byId = [&](std::size_t a, std::size_t b) { return cloud.globalId[a] < cloud.globalId[b]; };
-  std::sort(ghosts.begin(), ghosts.end(), byId);
-  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
-  auto byIdThenShift = [&](unsigned long long a, unsigned long long b) {
-    const long long ga = cloud.globalId[indexOf(a)], gb = cloud.globalId[indexOf(b)];
-    return ga != gb ? ga < gb : codeOf(a) < codeOf(b);
-  };
-  std::sort(images.begin(), images.end(), byIdThenShift);
-  images.erase(std::unique(images.begin(), images.end()), images.end());
-  t.overlapCloudIndex.insert(t.overlapCloudIndex.end(), ghosts.begin(), ghosts.end());
-  t.numGhosts = static_cast<int>(ghosts.size());
-  std::vector<int> localOf(n, -1);
-  for (std::size_t k = 0; k < t.overlapCloudIndex.size(); ++k)
-    localOf[t.overlapCloudIndex[k]] = static_cast<int>(k);
-  std::unordered_map<unsigned long long, int> localOfImage;
-  for (unsigned long long key : images) {
-    localOfImage[key] = static_cast<int>(t.overlapCloudIndex.size());
-    t.overlapCloudIndex.push_back(indexOf(key));
-    t.imageSource.push_back(localOf[indexOf(key)]);
-    double shift[3];
-    shiftVector(codeOf(key), opt.periodic, shift);
-    t.imageShift.insert(t.imageShift.end(), shift, shift + 3);
-  }
-  t.numOverlap = static_cast<int>(t.overlapCloudIndex.size());
-  t.overlapGlobalId.resize(t.numOverlap);
-  for (int k = 0; k < t.numOverlap; ++k)
-    t.overlapGlobalId[k] = cloud.globalId[t.overlapCloudIndex[k]];
-
-  t.bondOffsets.assign(t.numOwned + 1, 0);
-  std::vector<std::size_t>& sorted = lists.neighbors;  // sorted in place
-  t.neighbors.resize(lists.neighbors.size());
-  for (int i = 0; i < t.numOwned; ++i) {
-    const long long b = lists.offsets[i], e = lists.offsets[i + 1];
-    t.bondOffsets[i + 1] = e;
-    // Fixed summation order: by global id (then image), whatever the rank count.
-    std::sort(sorted.begin() + b, sorted.begin() + e, byIdThenShift);
-    for (long long k = b; k < e; ++k) {
-      const unsigned long long key = sorted[k];
-      t.neighbors[k] = codeOf(key) == kNoShift ? localOf[indexOf(key)] : localOfImage.at(key);
+  const GlobalFacts facts = globalFacts(points, opt, comm);  // with the overlap reach
+  long long shareSize = static_cast<long long>(points.size());
+  MPI_Allreduce(&shareSize, &t.globalNumPoints, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  std::vector<int> codes = {kNoShift};
+  if (opt.periodic.any()) {
+    codes.clear();
+    for (int c = 0; c < 27; ++c) {
+      const int s[3] = {c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1};
+      bool allowed = true;
+      for (int d = 0; d < 3; ++d) allowed = allowed && (s[d] == 0 || opt.periodic.periodic[d]);
+      if (allowed) codes.push_back(c);
     }
   }
-  lists = LocalLists();
+
+  // Partition, move the points to their owners, search among them and their halo.
+  std::vector<int> owner = partitionShare(points.x, {}, comm);
+  points = migrate(points, owner, comm);
+  Neighbourhoods lists =
+      search(std::move(points), facts, opt, codes, cloud.dimension, cloud.thickness, comm);
+  if (t.numRanks > 1 && opt.weightByBondCount) {
+    // Rebalance with each point weighted by its work (1 + its bonds), then search again.
+    std::vector<double> weight(lists.owned.size());
+    for (std::size_t p = 0; p < weight.size(); ++p)
+      weight[p] = 1.0 + static_cast<double>(lists.offsets[p + 1] - lists.offsets[p]);
+    points = std::move(lists.owned);
+    lists = Neighbourhoods();  // free the first lists before the second search
+    owner = partitionShare(points.x, weight, comm);
+    points = migrate(points, owner, comm);
+    lists = search(std::move(points), facts, opt, codes, cloud.dimension, cloud.thickness, comm);
+  }
+  const PointBatch& owned = lists.owned;
+  const PointBatch& halo = lists.halo.points;
+  const std::vector<int>& haloShift = lists.halo.shift;
+  const std::size_t numOwned = owned.size();
+  t.numOwned = static_cast<int>(numOwned);
+
+  // A candidate's identity: (global id, shift code).
+  auto gidOf = [&](std::size_t c) {
+    return c < numOwned ? owned.globalId[c] : halo.globalId[c - numOwned];
+  };
+  auto codeOf = [&](std::size_t c) { return c < numOwned ? kNoShift : haloShift[c - numOwned]; };
+  auto byIdThenShift = [&](std::size_t a, std::size_t b) {
+    const long long ga = gidOf(a), gb = gidOf(b);
+    return ga != gb ? ga < gb : codeOf(a) < codeOf(b);
+  };
+
+  // Space-filling-curve order of the owned points (ties broken by global id).
+  std::vector<unsigned long long> key(numOwned);
+  for (std::size_t p = 0; p < numOwned; ++p)
+    key[p] = mortonKey(&owned.x[3 * p], facts.lo, facts.hi);
+  std::vector<std::size_t> order(numOwned);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return key[a] != key[b] ? key[a] < key[b] : owned.globalId[a] < owned.globalId[b];
+  });
+  key = std::vector<unsigned long long>();
+
+  // Ghosts: the real points behind neighbours owned elsewhere (also of periodic images),
+  // sorted by global id; one halo record of each stands for it. Images come last, sorted by
+  // (global id, shift).
+  std::unordered_map<long long, int> localOfId;  // owned and ghost points
+  localOfId.reserve(2 * numOwned);
+  for (std::size_t k = 0; k < numOwned; ++k)
+    localOfId[owned.globalId[order[k]]] = static_cast<int>(k);
+  std::vector<std::size_t> ghosts, images;  // candidate indices
+  {
+    std::unordered_map<long long, std::size_t> ghostRecord;
+    for (std::size_t c : lists.neighbors) {
+      if (c < numOwned) continue;
+      const long long gid = gidOf(c);
+      if (!localOfId.count(gid)) ghostRecord.emplace(gid, c);
+      if (codeOf(c) != kNoShift) images.push_back(c);
+    }
+    for (const auto& kv : ghostRecord) ghosts.push_back(kv.second);
+  }
+  std::sort(ghosts.begin(), ghosts.end(), byIdThenShift);
+  std::sort(images.begin(), images.end(), byIdThenShift);
+  images.erase(std::unique(images.begin(), images.end(),
+                           [&](std::size_t a, std::size_t b) {
+                             return gidOf(a) == gidOf(b) && codeOf(a) == codeOf(b);
+                           }),
+               images.end());
+  t.numGhosts = static_cast<int>(ghosts.size());
+  t.numOverlap = t.numOwned + t.numGhosts + static_cast<int>(images.size());
+  const std::size_t numOverlap = static_cast<std::size_t>(t.numOverlap);
+  t.overlapGlobalId.resize(numOverlap);
+  t.referencePosition.resize(3 * numOverlap);
+  t.volume.resize(numOverlap);
+  t.horizon.resize(numOverlap);
+  t.blockId.resize(numOverlap);
+  // Overlap point k from candidate c: the unshifted point for owned and ghosts, x + shift for
+  // images (the same arithmetic the search used).
+  auto setPoint = [&](std::size_t k, std::size_t c, bool applyShift) {
+    const PointBatch& from = c < numOwned ? owned : halo;
+    const std::size_t p = c < numOwned ? c : c - numOwned;
+    double shift[3] = {0, 0, 0};
+    if (applyShift) shiftVector(codeOf(c), facts.boxLength, shift);
+    for (int d = 0; d < 3; ++d) t.referencePosition[3 * k + d] = from.x[3 * p + d] + shift[d];
+    t.overlapGlobalId[k] = from.globalId[p];
+    t.volume[k] = from.volume[p];
+    t.horizon[k] = from.horizon[p];
+    t.blockId[k] = from.blockId[p];
+  };
+  for (std::size_t k = 0; k < numOwned; ++k) setPoint(k, order[k], false);
+  for (std::size_t k = 0; k < ghosts.size(); ++k) {
+    setPoint(numOwned + k, ghosts[k], false);
+    localOfId[gidOf(ghosts[k])] = static_cast<int>(numOwned + k);
+  }
+  std::unordered_map<unsigned long long, int> localOfImage;  // gid * 27 + code
+  for (std::size_t m = 0; m < images.size(); ++m) {
+    const std::size_t k = numOwned + ghosts.size() + m;
+    setPoint(k, images[m], true);
+    const long long gid = gidOf(images[m]);
+    localOfImage[static_cast<unsigned long long>(gid) * 27ull + codeOf(images[m])] =
+        static_cast<int>(k);
+    t.imageSource.push_back(localOfId.at(gid));
+    double shift[3];
+    shiftVector(codeOf(images[m]), facts.boxLength, shift);
+    t.imageShift.insert(t.imageShift.end(), shift, shift + 3);
+  }
+
+  // Bond lists in SFC order of their owners, each sorted by (global id, shift): a fixed
+  // summation order whatever the rank count.
+  t.bondOffsets.assign(numOwned + 1, 0);
+  for (std::size_t k = 0; k < numOwned; ++k)
+    t.bondOffsets[k + 1] =
+        t.bondOffsets[k] + (lists.offsets[order[k] + 1] - lists.offsets[order[k]]);
+  t.neighbors.resize(lists.neighbors.size());
+  for (std::size_t k = 0; k < numOwned; ++k) {
+    const std::size_t p = order[k];
+    auto first = lists.neighbors.begin() + lists.offsets[p],
+         last = lists.neighbors.begin() + lists.offsets[p + 1];
+    std::sort(first, last, byIdThenShift);
+    std::int64_t b = t.bondOffsets[k];
+    for (auto it = first; it != last; ++it, ++b) {
+      const std::size_t c = *it;
+      const long long gid = gidOf(c);
+      t.neighbors[b] =
+          codeOf(c) == kNoShift
+              ? localOfId.at(gid)
+              : localOfImage.at(static_cast<unsigned long long>(gid) * 27ull + codeOf(c));
+    }
+  }
+
+  // Point sets as owned local indices.
+  for (const auto& set : cloud.pointSets) t.pointSetNames.push_back(set.name);
+  t.ownedPointSets.assign(cloud.pointSets.size(), {});
+  for (std::size_t k = 0; k < numOwned; ++k) {
+    const std::size_t p = order[k];
+    for (int s = owned.setOffsets[p]; s < owned.setOffsets[p + 1]; ++s)
+      t.ownedPointSets[owned.setIndex[s]].push_back(static_cast<int>(k));
+  }
+  lists = Neighbourhoods();
 
   // One-sided bonds (differing horizons, sphere rules): which end's horizon holds each bond,
   // with the search's own arithmetic so that both ends agree.
-  if (opt.rule.kind != NeighborhoodRule::Kind::CellBox &&
-      std::adjacent_find(horizon.begin(), horizon.end(), std::not_equal_to<double>()) !=
-          horizon.end()) {
+  if (opt.rule.kind != NeighborhoodRule::Kind::CellBox && facts.differentHorizons) {
     std::vector<unsigned char> sides(t.neighbors.size(), 3);
     bool oneSided = false;
     const bool strict = opt.rule.kind == NeighborhoodRule::Kind::SphereStrict;
     for (int i = 0; i < t.numOwned; ++i) {
-      const double hi2 = horizon[t.overlapCloudIndex[i]] * horizon[t.overlapCloudIndex[i]];
-      const double* xi = &cloud.x[3 * t.overlapCloudIndex[i]];
+      const double hi2 = t.horizon[i] * t.horizon[i];
+      const double* xi = &t.referencePosition[3 * i];
       for (std::int64_t b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
         const int j = t.neighbors[b];
-        const std::size_t cj = t.overlapCloudIndex[j];
-        const double* shift = t.shiftOf(j);
         double d2 = 0;
         for (int d = 0; d < 3; ++d) {
-          const double dx = (cloud.x[3 * cj + d] + shift[d]) - xi[d];
+          const double dx = t.referencePosition[3 * j + d] - xi[d];
           d2 += dx * dx;
         }
-        const double hj2 = horizon[cj] * horizon[cj];
+        const double hj2 = t.horizon[j] * t.horizon[j];
         const bool own = strict ? d2 < hi2 : d2 <= hi2;
         const bool other = strict ? d2 < hj2 : d2 <= hj2;
         sides[b] = static_cast<unsigned char>((own ? 1 : 0) | (other ? 2 : 0));
         oneSided = oneSided || sides[b] != 3;
       }
     }
-    if (oneSided) t.bondSides = std::move(sides);
+    int anyOneSided = oneSided ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &anyOneSided, 1, MPI_INT, MPI_MAX, comm);
+    if (anyOneSided) t.bondSides = std::move(sides);
   }
   long long localBonds = static_cast<long long>(t.neighbors.size());
   MPI_Allreduce(&localBonds, &t.globalNumBonds, 1, MPI_LONG_LONG, MPI_SUM, comm);
@@ -274,76 +362,6 @@ Topology buildFromReplicated(const PointCloud& cloud, const std::vector<double>&
   t.ghostMap3 = makeMap(expand3(ghostIds));
   t.ghostImport = Teuchos::rcp(new Import(t.ownedMap, t.ghostMap));
   t.ghostImport3 = Teuchos::rcp(new Import(t.ownedMap3, t.ghostMap3));
-  t.referencePosition.resize(3 * static_cast<std::size_t>(t.numOverlap));
-  t.volume.resize(t.numOverlap);
-  t.horizon.resize(t.numOverlap);
-  t.blockId.resize(t.numOverlap);
-  for (int k = 0; k < t.numOverlap; ++k) {
-    const std::size_t p = t.overlapCloudIndex[k];
-    const double* shift = t.shiftOf(k);
-    for (int d = 0; d < 3; ++d) t.referencePosition[3 * k + d] = cloud.x[3 * p + d] + shift[d];
-    t.volume[k] = cloud.volume[p];
-    t.horizon[k] = horizon[p];
-    t.blockId[k] = cloud.blockId[p];
-  }
-  for (const auto& set : cloud.pointSets) {
-    t.pointSetNames.push_back(set.name);
-    std::vector<int> owned;
-    for (int i = 0; i < t.numOwned; ++i)
-      if (std::binary_search(set.globalIds.begin(), set.globalIds.end(), t.overlapGlobalId[i]))
-        owned.push_back(i);
-    t.ownedPointSets.push_back(std::move(owned));
-  }
-  return t;
-}
-
-}  // namespace
-
-// TODO(distributed set-up): gathers the shares into one cloud on every rank.
-Topology buildTopology(const PointCloud& share, const std::vector<double>& shareHorizon,
-                       const TopologyOptions& options, MPI_Comm comm) {
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  const int n = static_cast<int>(share.size());
-  std::vector<int> counts(size), displs(size, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  const int total = displs[size - 1] + counts[size - 1];
-  PointCloud cloud;
-  cloud.blockNames = share.blockNames;
-  cloud.dimension = share.dimension;
-  cloud.thickness = share.thickness;
-  cloud.globalNumPoints = total;
-  cloud.volume.resize(total);
-  cloud.blockId.resize(total);
-  cloud.globalId.resize(total);
-  std::vector<double> horizon(total);
-  MPI_Allgatherv(share.volume.data(), n, MPI_DOUBLE, cloud.volume.data(), counts.data(),
-                 displs.data(), MPI_DOUBLE, comm);
-  MPI_Allgatherv(shareHorizon.data(), n, MPI_DOUBLE, horizon.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  MPI_Allgatherv(share.blockId.data(), n, MPI_INT, cloud.blockId.data(), counts.data(),
-                 displs.data(), MPI_INT, comm);
-  MPI_Allgatherv(share.globalId.data(), n, MPI_LONG_LONG, cloud.globalId.data(), counts.data(),
-                 displs.data(), MPI_LONG_LONG, comm);
-  std::vector<int> counts3(size), displs3(size);
-  for (int r = 0; r < size; ++r) counts3[r] = 3 * counts[r], displs3[r] = 3 * displs[r];
-  cloud.x.resize(3 * static_cast<std::size_t>(total));
-  MPI_Allgatherv(share.x.data(), 3 * n, MPI_DOUBLE, cloud.x.data(), counts3.data(), displs3.data(),
-                 MPI_DOUBLE, comm);
-  for (const auto& set : share.pointSets) {
-    const int m = static_cast<int>(set.globalIds.size());
-    std::vector<int> c(size), dsp(size, 0);
-    MPI_Allgather(&m, 1, MPI_INT, c.data(), 1, MPI_INT, comm);
-    for (int r = 1; r < size; ++r) dsp[r] = dsp[r - 1] + c[r - 1];
-    PointSet all{set.name, std::vector<long long>(dsp[size - 1] + c[size - 1])};
-    MPI_Allgatherv(set.globalIds.data(), m, MPI_LONG_LONG, all.globalIds.data(), c.data(),
-                   dsp.data(), MPI_LONG_LONG, comm);
-    std::sort(all.globalIds.begin(), all.globalIds.end());
-    cloud.pointSets.push_back(std::move(all));
-  }
-  Topology t = buildFromReplicated(cloud, horizon, options, comm);
-  t.overlapCloudIndex.clear();
   return t;
 }
 
