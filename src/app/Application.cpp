@@ -21,6 +21,9 @@ namespace peridot {
 
 namespace {
 
+// Every rank leaves the time loop after the same step: an orderly exit, no abort needed.
+constexpr int kStoppedWithoutRestart = 5;
+
 const char* kUsage =
     "Usage: peridot [options] DECK\n"
     "\n"
@@ -86,7 +89,7 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
                  "\"Restart: true\" to the deck to be able to continue)"
               << std::endl;
   }
-  return 5;
+  return kStoppedWithoutRestart;
 }
 
 }  // namespace
@@ -173,7 +176,7 @@ int runApplication(int argc, char** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   // Other ranks may be waiting in a collective call: only an abort releases them. Input errors
   // are printed by rank 0; the others wait a moment so their abort does not cut it short.
-  if (status != 0 && size > 1) {
+  if (status != 0 && status != kStoppedWithoutRestart && size > 1) {
     if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
     MPI_Abort(MPI_COMM_WORLD, status);
   }

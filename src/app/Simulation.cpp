@@ -440,6 +440,8 @@ void Simulation::checkFinite(long long step, double time) {
 
 void Simulation::run() {
   const auto& s = config_.solver;
+  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
+  if (resumed_ && firstStep_ > numSteps_) return;
   if (!outputs_) openOutputs();
   long long myBonds = topology_.numBonds(), maxBonds = 0;
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);

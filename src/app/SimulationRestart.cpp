@@ -85,11 +85,12 @@ void Simulation::reportCheckpoints(std::ostream& out) {
   double checking = control_->secondsChecking(), maxChecking = 0;
   MPI_Allreduce(&checking, &maxChecking, 1, MPI_DOUBLE, MPI_MAX, comm_);
   if (rank_ != 0 || !checkpoint_) return;
-  char text[320];
+  char text[400];
   const double bytes = checkpoint_->lastBytes();
   std::snprintf(text, sizeof text,
                 "Checkpoints: %d written, %.1f MB in all, %.3f s writing; last %.0f bytes "
-                "(%lld bytes per point + %lld per bond); stop-signal checks %.4f s\n",
+                "(%lld bytes per point + %lld per bond); per-step stop checks (MPI_Allreduce, "
+                "including waits for the slowest rank) %.4f s\n",
                 checkpoint_->count(), checkpoint_->bytesWritten() / 1e6,
                 checkpoint_->secondsWriting(), bytes, checkpoint_->pointRecordBytes(),
                 checkpoint_->bondRecordBytes(), maxChecking);

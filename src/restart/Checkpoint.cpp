@@ -292,9 +292,17 @@ void Checkpoint::write(const CheckpointClock& clock, const std::vector<std::stri
   if (!error.empty()) error = "writing checkpoint " + temporary + " failed: " + error;
   throwIfAnyRank(error, comm, true);
   if (topology_.rank == 0) {
+    // The checkpoint name always holds a complete checkpoint: the previous one is linked (not
+    // moved) to .prev, then the new one replaces it in one rename.
     std::error_code ec;
-    if (std::filesystem::exists(path_)) std::filesystem::rename(path_, path_ + ".prev", ec);
-    if (!ec) std::filesystem::rename(temporary, path_, ec);
+    const std::string previous = path_ + ".prev";
+    std::filesystem::remove(previous, ec);
+    if (std::filesystem::exists(path_)) {
+      std::filesystem::create_hard_link(path_, previous, ec);
+      if (ec) std::filesystem::copy_file(path_, previous, ec);  // no hard links on this system
+      ec.clear();  // without a .prev the new checkpoint is still written
+    }
+    std::filesystem::rename(temporary, path_, ec);
     if (ec) error = "cannot rename " + temporary + " to " + path_ + ": " + ec.message();
     // The renames themselves reach the disk with the directory.
     const int dir = ::open(config_.directory.c_str(), O_RDONLY);

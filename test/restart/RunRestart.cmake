@@ -81,14 +81,34 @@ elseif(MODE STREQUAL "signal")
   expect_in("${log}" "Done.")
   compare(Cut.e Full.e)
   # Without Restart a signal stops the run with an error status and a clear message.
-  execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} Full.yaml Full.e full.log
+  deck(NoRestart.yaml 0.0 ${FINAL} NoRestart "")
+  execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} NoRestart.yaml NoRestart.e
+                          norestart.log
                   WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
-  file(READ "${WORK_DIR}/full.log" log)
-  message("---- Full.yaml on 2 ranks, SIGTERM: status ${rc}\n${log}")
+  file(READ "${WORK_DIR}/norestart.log" log)
+  message("---- NoRestart.yaml on 2 ranks, SIGTERM: status ${rc}\n${log}")
   if(rc EQUAL 0)
     message(FATAL_ERROR "a run without Restart stopped by a signal must exit non-zero")
   endif()
   expect_in("${log}" "without a checkpoint")
+  # A Wall Clock Limit already reached at start-up: checkpoint and stop after the first step
+  # (exit 0); the same deck with the limit lifted (the Restart list may change) completes.
+  file(REMOVE "${WORK_DIR}/peridot.checkpoint")
+  deck(Limit.yaml 0.0 ${FINAL} Limit "${restart_on}\n    Wall Clock Limit: 0.0001")
+  run(2 Limit.yaml 0 log)
+  expect_in("${log}" "Stopped before the Wall Clock Limit at step 1,")
+  deck(Limit.yaml 0.0 ${FINAL} Limit "${restart_on}")
+  run(1 Limit.yaml 0 log)
+  expect_in("${log}" "Restart: continuing from checkpoint ./peridot.checkpoint at step 1,")
+  compare(Limit.e Full.e)
+  # Run again once complete: nothing to do, the outputs are left alone.
+  file(SIZE "${WORK_DIR}/Limit.e" before)
+  run(2 Limit.yaml 0 log)
+  expect_in("${log}" "nothing to do")
+  file(SIZE "${WORK_DIR}/Limit.e" after)
+  if(NOT before EQUAL after)
+    message(FATAL_ERROR "rerunning a complete run changed its output")
+  endif()
 elseif(MODE STREQUAL "refused")
   deck(Run1.yaml 0.0 ${HALF} Part1 "${restart_on}")
   deck(Run2.yaml ${HALF} ${FINAL} Part2 "${restart_on}")
