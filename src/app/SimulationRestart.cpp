@@ -1,5 +1,6 @@
 // Simulation's restart pieces: continuing from a checkpoint and writing one. Kept apart from
 // Simulation.cpp, which holds the set-up and the time loop.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -26,7 +27,10 @@ void Simulation::searchContact() {
 
 void Simulation::resume() {
   const auto& s = config_.solver;
+  const auto started = std::chrono::steady_clock::now();
   const CheckpointClock clock = checkpoint_->read();
+  const double readSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const std::string where = "checkpoint " + checkpoint_->path();
   if (clock.dt != dt_) {
     throw InputError(where + " was written with time step " + formatNumber(clock.dt) +
@@ -56,7 +60,7 @@ void Simulation::resume() {
   }
   if (rank_ == 0) {
     log_ << "Restart: continuing from " << where << " at step " << clock.step << ", time "
-         << formatNumber(clock.time) << "\n";
+         << formatNumber(clock.time) << " (read in " << readSeconds << " s)\n";
     if (firstStep_ > numSteps_)
       log_ << "Restart: the checkpoint is at or past the Final Time; nothing to do\n";
   }
