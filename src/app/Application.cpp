@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "app/Signals.hpp"
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "damage/DamageModel.hpp"
@@ -19,6 +20,9 @@
 namespace peridot {
 
 namespace {
+
+// Every rank leaves the time loop after the same step: an orderly exit, no abort needed.
+constexpr int kStoppedWithoutRestart = 5;
 
 const char* kUsage =
     "Usage: peridot [options] DECK\n"
@@ -60,8 +64,32 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
   simulation.run();
   simulation.timers().report(std::cout, MPI_COMM_WORLD);
   simulation.reportMemory(std::cout);
-  if (rank == 0) std::cout << "Done." << std::endl;
-  return 0;
+  simulation.reportCheckpoints(std::cout);
+  if (!simulation.stopped()) {
+    // Batch scripts look for this line to know that the run is complete.
+    if (rank == 0) std::cout << "Done." << std::endl;
+    return 0;
+  }
+  const std::string why = simulation.stopSignal() != 0
+                              ? std::string("after ") + signalName(simulation.stopSignal())
+                              : std::string("before the Wall Clock Limit");
+  if (simulation.checkpoint()) {
+    if (rank == 0) {
+      std::cout << "Stopped " << why << " at step " << simulation.lastStep() << ", time "
+                << simulation.time() << "; checkpoint written to "
+                << simulation.checkpoint()->path() << ". To continue, run the same command again."
+                << std::endl;
+    }
+    return 0;
+  }
+  if (rank == 0) {
+    std::cerr << "peridot: error: stopped " << why << " at step " << simulation.lastStep()
+              << ", time " << simulation.time()
+              << " without a checkpoint (the outputs hold the records written so far; add "
+                 "\"Restart: true\" to the deck to be able to continue)"
+              << std::endl;
+  }
+  return kStoppedWithoutRestart;
 }
 
 }  // namespace
@@ -117,6 +145,7 @@ int runApplication(int argc, char** argv) {
     return 2;
   }
 
+  installStopSignalHandlers();
   Tpetra::ScopeGuard mpi(&argc, &argv);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -129,7 +158,9 @@ int runApplication(int argc, char** argv) {
     if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
     status = 1;
   } catch (const RunError& e) {
-    if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
+    // Shared findings (throwIfAnyRank) are printed by rank 0; an error of this rank alone (an
+    // I/O failure) by this rank, before the abort below releases the others.
+    if (rank == 0 || !e.collective()) std::cerr << "peridot: error: " << e.what() << std::endl;
     status = 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "peridot: error: out of memory on rank " << rank
@@ -145,7 +176,7 @@ int runApplication(int argc, char** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   // Other ranks may be waiting in a collective call: only an abort releases them. Input errors
   // are printed by rank 0; the others wait a moment so their abort does not cut it short.
-  if (status != 0 && size > 1) {
+  if (status != 0 && status != kStoppedWithoutRestart && size > 1) {
     if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
     MPI_Abort(MPI_COMM_WORLD, status);
   }

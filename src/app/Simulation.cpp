@@ -297,6 +297,12 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
+  origin_ = s.initialTime;
+  if (config_.restart.enabled) {
+    checkpoint_ = std::make_unique<Checkpoint>(config_.restart, topology_, *fields_);
+    if (checkpoint_->exists()) resume();
+  }
+  control_ = std::make_unique<RunControl>(config_.restart, comm_);
 }
 
 void Simulation::checkDimension() {
@@ -394,7 +400,7 @@ void Simulation::reportMemory(std::ostream& out) {
 }
 
 void Simulation::evaluateForces(long long step) {
-  if (contact_ && step == 0) contact_->search(y_);
+  if (contact_ && step == 0) searchContact();
   evaluator_->evaluate(dt_);
   if (contact_) contact_->computeForce(y_, v_, fc_);
 }
@@ -434,6 +440,8 @@ void Simulation::checkFinite(long long step, double time) {
 
 void Simulation::run() {
   const auto& s = config_.solver;
+  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
+  if (resumed_ && firstStep_ > numSteps_) return;
   if (!outputs_) openOutputs();
   long long myBonds = topology_.numBonds(), maxBonds = 0;
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
@@ -460,22 +468,27 @@ void Simulation::run() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
-  for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
-  if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
-  evaluateForces(0);
-  checkFinite(0, time_);
-  computeAcceleration();
-  outputs_->write(0, time_);
-  if (observer_) observer_(0, time_);
+  if (!resumed_) {
+    for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
+    if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
+    evaluateForces(0);
+    checkFinite(0, time_);
+    computeAcceleration();
+    outputs_->write(0, time_);
+    if (observer_) observer_(0, time_);
+  }
+  // PENDING (OutputManager resume API): when resumed_, the output files should be reopened and
+  // cut after the checkpoint's time, outputs_->resume(firstStep_ - 1, time_); until then a
+  // continued run writes new files holding the records after the checkpoint.
 
   const double half = 0.5 * dt_;
   const int n3 = 3 * topology_.numOwned;
   const auto start = std::chrono::steady_clock::now();
   auto lastReport = start;
-  for (long long step = 1; step <= numSteps_; ++step) {
-    const double next = s.initialTime + step * dt_;
+  for (long long step = firstStep_; step <= numSteps_; ++step) {
+    const double next = origin_ + step * dt_;
     // The contact lists follow the current configuration (Peridigm searches at these steps).
-    if (contact_ && step % config_.contact.searchFrequency == 0) contact_->search(y_);
+    if (contact_ && step % config_.contact.searchFrequency == 0) searchContact();
     {
       Timers::Scope t(timers_, "Integration");
       for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
@@ -502,13 +515,22 @@ void Simulation::run() {
     }
     if (outputs_->due(step)) outputs_->write(step, time_);
     if (observer_) observer_(step, time_);
+    lastStep_ = step;
+    const auto decision = control_->afterStep(step, step == numSteps_,
+                                              checkpoint_ ? checkpoint_->lastWriteSeconds() : 0.0);
+    if (decision.checkpoint) writeCheckpoint(step);
+    if (decision.stop) {
+      stopped_ = true;
+      stopSignal_ = decision.signal;
+      break;
+    }
     if (rank_ == 0) {
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - lastReport).count() > 5.0 ||
           (step == numSteps_ && std::chrono::duration<double>(now - start).count() > 5.0)) {
         lastReport = now;
         const double elapsed = std::chrono::duration<double>(now - start).count();
-        const double left = elapsed / step * (numSteps_ - step);
+        const double left = elapsed / (step - firstStep_ + 1) * (numSteps_ - step);
         log_ << "  step " << step << "/" << numSteps_ << "  t = " << time_ << "  elapsed "
              << formatSeconds(elapsed) << "  remaining ~" << formatSeconds(left) << std::endl;
       }

@@ -18,6 +18,8 @@
 #include "fields/FieldManager.hpp"
 #include "output/OutputManager.hpp"
 #include "parallel/Topology.hpp"
+#include "restart/Checkpoint.hpp"
+#include "restart/RunControl.hpp"
 
 namespace peridot {
 
@@ -29,6 +31,16 @@ class Simulation {
 
   // Runs the Verlet solver to the final time, writing the outputs. Collective.
   void run();
+  // True when run() left the time loop early (a stop signal or the Wall Clock Limit); with
+  // Restart a checkpoint of the last completed step was written first.
+  bool stopped() const { return stopped_; }
+  int stopSignal() const { return stopSignal_; }
+  // The step and time the run reached (the checkpoint's, when stopped).
+  long long lastStep() const { return lastStep_; }
+  double time() const { return time_; }
+  // Collective: rank 0 prints checkpoint and signal-check statistics (nothing without Restart).
+  void reportCheckpoints(std::ostream& out);
+  const Checkpoint* checkpoint() const { return checkpoint_.get(); }
   // Called after every completed step (and once for the initial state with step 0).
   void setStepObserver(std::function<void(long long step, double time)> observer) {
     observer_ = std::move(observer);
@@ -54,6 +66,10 @@ class Simulation {
   void computeAcceleration();
   void evaluateForces(long long step);
   void checkFinite(long long step, double time);
+  // Restart (SimulationRestart.cpp): continue from the checkpoint, write one, search contact.
+  void resume();
+  void writeCheckpoint(long long step);
+  void searchContact();
 
   RunConfig config_;
   MPI_Comm comm_;
@@ -78,6 +94,13 @@ class Simulation {
   double dt_ = 0, stableDt_ = 0, time_ = 0;
   long long numSteps_ = 0;
   std::function<void(long long, double)> observer_;
+  std::unique_ptr<Checkpoint> checkpoint_;  // with Restart
+  std::unique_ptr<RunControl> control_;
+  double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_
+  long long firstStep_ = 1;  // the first step run() takes (after a checkpoint's step)
+  long long lastStep_ = 0;   // the last step completed
+  bool resumed_ = false, stopped_ = false;
+  int stopSignal_ = 0;
   double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr, *f_ = nullptr,
          *b_ = nullptr, *volume_ = nullptr, *fc_ = nullptr;
 };

@@ -72,6 +72,14 @@ std::string BoundaryConditions::applyInitial(double t0, double* u, double* v) {
   return message;
 }
 
+void BoundaryConditions::resume(double t) {
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::PrescribedDisplacement) continue;
+    c.previous.resize(c.points.size());
+    for (std::size_t k = 0; k < c.points.size(); ++k) c.previous[k] = evaluate(c, c.points[k], t);
+  }
+}
+
 void BoundaryConditions::applyPrescribedVelocity(double tNext, double dt, double* v) {
   for (auto& c : conditions_) {
     if (c.config.kind != ConditionConfig::Kind::PrescribedDisplacement) continue;

@@ -27,6 +27,9 @@ class BoundaryConditions {
   std::string applyInitial(double t0, double* u, double* v);
   // Velocity of prescribed components over the step [tPrev, tNext]: (u(tNext) - u(tPrev)) / dt.
   void applyPrescribedVelocity(double tNext, double dt, double* v);
+  // A run continued from a checkpoint at time t: prescribed displacements restart from u(t),
+  // the same values the uninterrupted run holds after the step that ended at t.
+  void resume(double t);
   // Sets the body force density at time t (zero elsewhere) in `externalForceDensity` (owned).
   // A traction sigma on a surface of area A becomes the body force density sigma A / V over
   // the points of its node set (total volume V), so that the total force is sigma A exactly

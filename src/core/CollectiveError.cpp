@@ -17,7 +17,7 @@ void throwIfAnyRank(const std::string& localMessage, MPI_Comm comm, bool duringR
   std::string message =
       rank == first ? localMessage : std::string(static_cast<std::size_t>(length), ' ');
   MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
-  if (duringRun) throw RunError(message);
+  if (duringRun) throw RunError(message).markCollective();
   throw InputError(message);
 }
 

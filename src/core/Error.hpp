@@ -18,6 +18,15 @@ class InputError : public std::runtime_error {
 class RunError : public std::runtime_error {
  public:
   explicit RunError(const std::string& message) : std::runtime_error(message) {}
+  // Thrown on every rank alike (throwIfAnyRank): rank 0 alone reports it.
+  bool collective() const { return collective_; }
+  RunError& markCollective() {
+    collective_ = true;
+    return *this;
+  }
+
+ private:
+  bool collective_ = false;
 };
 
 }  // namespace peridot

@@ -27,6 +27,9 @@ class DamageModel {
   // exceeds it": a material that fuses that check into its force loop may then replace
   // computeDamage (MaterialModel::fusesCriticalStretch).
   virtual double fusableCriticalStretch() const { return 0.0; }
+  // A run continued from a checkpoint: the model's history fields are restored and the next
+  // evaluation closes a step (it is not the initial state).
+  virtual void resume() {}
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -35,6 +35,7 @@ class LSJT : public DamageModel {
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,
             std::ostream& log) override;
   double criticalStretch() const { return criticalStretch_.value(); }
+  void resume() override { started_ = true; }
 
   static constexpr const char* kHistoryIntegral = "LSJT_History_Integral";
 

@@ -209,6 +209,74 @@ const VariableInfo* findOutputVariable(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+
+// FNV-1a, 64 bits: stable across builds and platforms (std::hash is not).
+void hashBytes(std::uint64_t& h, const std::string& text) {
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  h ^= 0xff;  // separator: "ab","c" differs from "a","bc"
+  h *= 1099511628211ULL;
+}
+
+// Hashes every entry that decides the state of a continued run. Left out: what Peridigm's
+// restart decks change between the runs (Initial Time, Final Time, output lists) and the
+// Restart list itself.
+void hashList(std::uint64_t& h, const Teuchos::ParameterList& list, bool top, bool solver) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string& key = list.name(it);
+    const auto& entry = list.entry(it);
+    if (top && (key == "Restart" || (key.find("Output") != std::string::npos && entry.isList())))
+      continue;
+    if (solver && (key == "Initial Time" || key == "Final Time")) continue;
+    hashBytes(h, key);
+    if (entry.isList()) {
+      hashList(h, Teuchos::getValue<Teuchos::ParameterList>(entry), false,
+               top && key.find("Solver") != std::string::npos);
+    } else {
+      hashBytes(h, entry.getAny(false).typeName());
+      hashBytes(h, describeEntry(entry));
+    }
+  }
+}
+
+std::uint64_t deckHash(const Teuchos::ParameterList& deck) {
+  std::uint64_t h = 14695981039346656037ULL;
+  hashList(h, deck, true, false);
+  return h;
+}
+
+RestartConfig readRestart(ListReader& top, const Teuchos::ParameterList& deck) {
+  RestartConfig r;
+  if (!deck.getEntry("Restart").isList()) {
+    r.enabled = top.boolean("Restart", false);
+    return r;
+  }
+  ListReader list = top.sublist("Restart");
+  // Peridigm's list form holds a "Restart" bool; the list alone also turns restart on.
+  r.enabled = list.boolean("Restart", true);
+  r.checkpointFrequency = list.integer("Checkpoint Frequency", 0);
+  if (r.checkpointFrequency < 0) {
+    throw InputError(list.pathOf("Checkpoint Frequency"),
+                     "expected a number of steps >= 0 (0: only at the end)");
+  }
+  r.checkpointInterval = list.nonNegativeNumber("Checkpoint Interval", 0.0);
+  r.wallClockLimit = list.nonNegativeNumber("Wall Clock Limit", 0.0);
+  r.directory = list.string("Checkpoint Directory", ".");
+  r.name = list.string("Checkpoint Name", "peridot.checkpoint");
+  if (r.directory.empty()) throw InputError(list.pathOf("Checkpoint Directory"), "is empty");
+  if (r.name.empty() || r.name.find('/') != std::string::npos) {
+    throw InputError(list.pathOf("Checkpoint Name"),
+                     "expected a file name without '/' (the directory is Checkpoint Directory)");
+  }
+  list.finish();
+  return r;
+}
+
+}  // namespace
+
 RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   RunConfig config;
   ListReader top(deck, "");
@@ -310,12 +378,8 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
       throw InputError(unsupported, "not supported by Peridot yet");
     }
   }
-  if (top.has("Restart")) {
-    const auto& e = deck.getEntry("Restart");
-    if (e.isList() || top.boolean("Restart", false)) {
-      throw InputError("Restart", "restart is not supported by Peridot yet");
-    }
-  }
+  if (top.has("Restart")) config.restart = readRestart(top, deck);
+  config.restart.deckHash = deckHash(deck);
   top.finish();
   return config;
 }

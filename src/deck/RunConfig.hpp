@@ -2,6 +2,7 @@
 // The whole deck, validated and typed, before any work is done: every key is read here (or by
 // the model it belongs to), so a misspelt or unsupported key stops the run at once.
 #include <Teuchos_ParameterList.hpp>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -54,6 +55,20 @@ struct OutputConfig {
   std::vector<std::string> variables;  // requested names, deck order
 };
 
+// Top-level `Restart` (Peridigm's bool or list) with Peridot's checkpoint cadence keys.
+struct RestartConfig {
+  bool enabled = false;
+  std::string path = "Restart";
+  long long checkpointFrequency = 0;  // steps between checkpoints, 0 = only at the end
+  double checkpointInterval = 0;      // wall-clock minutes between checkpoints, 0 = none
+  double wallClockLimit = 0;          // minutes: checkpoint and stop before it, 0 = none
+  std::string directory = ".";
+  std::string name = "peridot.checkpoint";
+  // Hash of the deck without what a continuation may change (Initial/Final Time, outputs,
+  // Restart): a checkpoint written under another model, mesh or condition is refused.
+  std::uint64_t deckHash = 0;
+};
+
 struct ComputeConfig {
   std::string name, path, computeClass, calculation, region, variable, label;
 };
@@ -71,6 +86,7 @@ struct RunConfig {
   std::vector<OutputConfig> outputs;
   std::vector<ComputeConfig> computes;
   ContactConfig contact;
+  RestartConfig restart;
 };
 
 RunConfig readRunConfig(const Teuchos::ParameterList& deck);

@@ -77,6 +77,18 @@ std::vector<float>& FieldManager::bondFloat(const std::string& name, float initi
       .first->second;
 }
 
+std::vector<std::string> FieldManager::bondFieldNames() const {
+  std::vector<std::string> names;
+  for (const auto& kv : bondFields_) names.push_back(kv.first);
+  return names;
+}
+
+std::vector<std::string> FieldManager::floatBondFieldNames() const {
+  std::vector<std::string> names;
+  for (const auto& kv : floatBondFields_) names.push_back(kv.first);
+  return names;
+}
+
 std::size_t FieldManager::bytesAllocated() const {
   std::size_t bytes = 0;
   for (const auto& kv : nodeFields_)

@@ -42,6 +42,11 @@ class FieldManager {
   // Single precision, for bond state that needs no more (bond damage).
   std::vector<float>& bondFloat(const std::string& name, float initial = 0.0f);
 
+  // Names of the bond fields allocated so far (double, then float), e.g. for a checkpoint.
+  std::vector<std::string> bondFieldNames() const;
+  std::vector<std::string> floatBondFieldNames() const;
+  bool hasNode(const std::string& name) const { return nodeFields_.count(name) > 0; }
+
   std::size_t bytesAllocated() const;
 
  private:

@@ -185,8 +185,10 @@ peridot_baddeck(contact_without_models DECK contact_without_models.yaml
   EXPECT [[Contact -> Models: required list is missing]])
 peridot_baddeck(quasistatic_unsupported DECK quasistatic_unsupported.yaml
   EXPECT [[Solver -> QuasiStatic: this solver is not supported by Peridot yet; use Verlet]])
-peridot_baddeck(restart_unsupported DECK restart_unsupported.yaml
-  EXPECT [[Restart: restart is not supported by Peridot yet]])
+peridot_baddeck(restart_unknown_key DECK restart_unknown_key.yaml
+  EXPECT [[Restart -> Checkpoint Frequence: unknown parameter]])
+peridot_baddeck(restart_bad_frequency DECK restart_bad_frequency.yaml
+  EXPECT [[Restart -> Checkpoint Frequency: expected a number of steps >= 0]])
 
 # ---- output ----
 peridot_baddeck(unknown_output_file_type DECK unknown_output_file_type.yaml

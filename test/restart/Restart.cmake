@@ -1,0 +1,31 @@
+# Restart tests (included from test/CMakeLists.txt). Each runs peridot under mpirun through
+# RunRestart.cmake and compares the last output record with an uninterrupted run, bit for bit:
+#   restart_split_<deck>: 0 -> T/2 on 2 ranks with Restart, then T/2 -> T on 3 ranks with
+#                         Peridigm's continuation deck (Initial Time T/2, another output name)
+#   restart_signal:       a run cut by SIGTERM after its first periodic checkpoint, then the same
+#                         command again on another rank count
+#   restart_refused:      a truncated checkpoint, one from another deck and one from another mesh
+#                         are refused with messages naming the file and the mismatch
+add_executable(last_record_diff ${CMAKE_CURRENT_LIST_DIR}/last_record_diff.cpp)
+target_link_libraries(last_record_diff PRIVATE peridot_core)
+
+set(PERIDOT_RESTART_DIR "${CMAKE_CURRENT_LIST_DIR}")
+function(peridot_restart_test name mode deck final half frequency nonzero)
+  add_test(NAME restart_${name}
+    COMMAND ${CMAKE_COMMAND}
+      -DMODE=${mode} -DCASE_DIR=${PERIDOT_RESTART_DIR}/decks -DDECK_IN=${deck}
+      -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/restart/${name}
+      -DFINAL=${final} -DHALF=${half} -DFREQUENCY=${frequency} "-DNONZERO=${nonzero}"
+      -DMPIEXEC=${MPIEXEC_EXECUTABLE} -DPERIDOT=$<TARGET_FILE:peridot>
+      -DLAST_RECORD_DIFF=$<TARGET_FILE:last_record_diff>
+      -DSIGNAL_RUN=${PERIDOT_RESTART_DIR}/signal_run.sh
+      -P ${PERIDOT_RESTART_DIR}/RunRestart.cmake)
+  set_tests_properties(restart_${name} PROPERTIES
+    ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "restart" TIMEOUT 300)
+endfunction()
+
+peridot_restart_test(split_perforation split Perforation.yaml.in 2.0e-5 1.0e-5 10
+                     "Damage;Contact_Force_Density")
+peridot_restart_test(split_lsjt split LSJT.yaml.in 1.0e-5 5.0e-6 10 "Damage")
+peridot_restart_test(signal signal Perforation.yaml.in 6.0e-5 0 10 "Damage")
+peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
