@@ -272,14 +272,19 @@ void ShareReader::readElementIds() {
     fail(key, "the element number map contains the id " + std::to_string(lowest) +
                   "; element ids must be positive");
   }
-  // Duplicates meet at the rank id % size, which sorts what it receives.
+  // Duplicates meet at one rank, chosen by a multiplicative hash of the id so that ids with a
+  // stride (all even, say) still spread evenly.
+  const auto meet = [&](int64_t id) {
+    return static_cast<std::size_t>((static_cast<uint64_t>(id) * 0x9E3779B97F4A7C15ull >> 32) %
+                                    static_cast<uint64_t>(size_));
+  };
   std::vector<int> counts(static_cast<std::size_t>(size_), 0), recvCounts;
-  for (int64_t id : ids_) ++counts[static_cast<std::size_t>(id % size_)];
+  for (int64_t id : ids_) ++counts[meet(id)];
   std::vector<int64_t> send(ids_.size());
   {
     std::vector<int> fill(static_cast<std::size_t>(size_), 0);
     for (int r = 1; r < size_; ++r) fill[r] = fill[r - 1] + counts[r - 1];
-    for (int64_t id : ids_) send[static_cast<std::size_t>(fill[id % size_]++)] = id;
+    for (int64_t id : ids_) send[static_cast<std::size_t>(fill[meet(id)]++)] = id;
   }
   std::vector<int64_t> mine = exchange(send, counts, recvCounts, comm_);
   send = std::vector<int64_t>();
