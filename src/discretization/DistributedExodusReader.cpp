@@ -17,6 +17,7 @@
 #include "core/Error.hpp"
 #include "discretization/ElementGeometry.hpp"
 #include "discretization/ExodusMeshReader.hpp"
+#include "discretization/NodeSetExchange.hpp"
 #include "discretization/Slicing.hpp"
 
 namespace peridot {
@@ -57,13 +58,6 @@ struct Key {
 struct Failure {
   Key key;
   std::string message;  // the full InputError text
-};
-
-// A node set entry: the node (1-based) and the set's index in the file.
-struct NodeInSet {
-  int64_t node = 0, set = 0;
-  bool operator<(const NodeInSet& o) const { return node != o.node ? node < o.node : set < o.set; }
-  bool operator==(const NodeInSet& o) const { return node == o.node && set == o.set; }
 };
 
 // Stages within a block, in the order the serial read checks them.
@@ -602,49 +596,9 @@ void ShareReader::readNodeSets(PointCloud& cloud) {
   }
   settle();
 
-  // The homes learn the sets of their nodes, sorted by node.
-  std::sort(pairs.begin(), pairs.end());  // by node, hence by home
-  std::vector<int> counts(static_cast<std::size_t>(size_), 0), recvCounts;
-  for (const auto& p : pairs) ++counts[static_cast<std::size_t>(nodes_.home(p.node - 1))];
-  std::vector<NodeInSet> homed = exchange(pairs, counts, recvCounts, comm_);
-  pairs = {};
-  std::sort(homed.begin(), homed.end());
-  homed.erase(std::unique(homed.begin(), homed.end()), homed.end());
-
-  // Answer each request in order with (number of sets, the sets).
-  std::vector<int64_t> answers;
-  std::fill(counts.begin(), counts.end(), 0);
-  std::size_t request = 0;
-  for (int r = 0; r < size_; ++r) {
-    const std::size_t before = answers.size();
-    for (int i = 0; i < requestCounts_[r]; ++i, ++request) {
-      const int64_t node = requests_[request];
-      auto it = std::lower_bound(homed.begin(), homed.end(), NodeInSet{node, 0});
-      const std::size_t countAt = answers.size();
-      answers.push_back(0);
-      for (; it != homed.end() && it->node == node; ++it) {
-        answers.push_back(it->set);
-        ++answers[countAt];
-      }
-    }
-    counts[r] = static_cast<int>(answers.size() - before);
-  }
-  homed = {};
+  const NodeSetsOfNodes sets = nodeSetsOfRequested(std::move(pairs), nodes_, requests_,
+                                                   requestCounts_, needed_.size(), comm_);
   requests_ = {};
-  std::vector<int> ignored;
-  const std::vector<int64_t> replies = exchange(answers, counts, ignored, comm_);
-  answers = {};
-
-  // The replies come in the order of needed_ (sorted, grouped by home in rank order).
-  std::vector<std::size_t> start(needed_.size() + 1, 0);
-  std::vector<int64_t> setsOf;
-  for (std::size_t i = 0, at = 0; i < needed_.size(); ++i) {
-    const auto n = static_cast<std::size_t>(replies[at]);
-    setsOf.insert(setsOf.end(), replies.begin() + static_cast<std::ptrdiff_t>(at + 1),
-                  replies.begin() + static_cast<std::ptrdiff_t>(at + 1 + n));
-    at += 1 + n;
-    start[i + 1] = setsOf.size();
-  }
   std::size_t point = 0;
   for (const Chunk& chunk : chunks_) {
     const auto npe = static_cast<std::size_t>(blocks_[chunk.block].nodesPerElement);
@@ -654,8 +608,8 @@ void ShareReader::readNodeSets(PointCloud& cloud) {
       for (std::size_t a = 0; a < npe; ++a) {
         const auto i = static_cast<std::size_t>(
             std::lower_bound(needed_.begin(), needed_.end(), conn[a]) - needed_.begin());
-        for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
-          cloud.pointSets[static_cast<std::size_t>(setsOf[k])].globalIds.push_back(
+        for (std::size_t k = sets.start[i]; k < sets.start[i + 1]; ++k) {
+          cloud.pointSets[static_cast<std::size_t>(sets.sets[k])].globalIds.push_back(
               cloud.globalId[point]);
         }
       }
