@@ -36,14 +36,19 @@ inline std::vector<T> exchange(const std::vector<T>& send, const std::vector<int
   std::vector<int> sendDispl(size, 0), recvDispl(size, 0);
   long long sendTotal = 0, recvTotal = 0;
   for (int r = 0; r < size; ++r) {
-    // MPI counts and displacements are ints: a share that large needs more ranks.
-    if (sendTotal > INT_MAX || recvTotal > INT_MAX) {
-      throw RunError("more than INT_MAX items to exchange between two ranks; use more ranks");
-    }
-    sendDispl[r] = static_cast<int>(sendTotal);
-    recvDispl[r] = static_cast<int>(recvTotal);
+    sendDispl[r] = static_cast<int>(std::min<long long>(sendTotal, INT_MAX));
+    recvDispl[r] = static_cast<int>(std::min<long long>(recvTotal, INT_MAX));
     sendTotal += sendCounts[r];
     recvTotal += recvCounts[r];
+  }
+  // MPI displacements are ints. Every rank learns whether any rank overflows, so that all
+  // throw together instead of leaving the others in MPI_Alltoallv.
+  int tooMany = sendTotal > INT_MAX || recvTotal > INT_MAX ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &tooMany, 1, MPI_INT, MPI_MAX, comm);
+  if (tooMany != 0) {
+    throw RunError(
+        "a rank's share of the mesh needs more than INT_MAX items in one exchange; "
+        "use more ranks");
   }
   std::vector<T> recv(static_cast<std::size_t>(recvTotal));
   MPI_Datatype type;
