@@ -10,7 +10,9 @@
 #include "core/Error.hpp"
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
-#include "discretization/ExodusMeshReader.hpp"
+#include "discretization/DistributedExodusReader.hpp"
+#include "discretization/Slicing.hpp"
+#include "discretization/TextMeshReader.hpp"
 
 namespace peridot {
 
@@ -282,145 +284,100 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
 
 PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath, int dimension,
                         double thickness) {
-  std::ifstream in(fileName);
-  if (!in) throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\"");
-  if (std::filesystem::is_directory(fileName)) {
-    throw InputError(deckPath, "cannot open text mesh \"" + fileName + "\": it is a directory");
-  }
-  PointCloud cloud;
-  std::string line;
-  long long lineNumber = 0;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) continue;
-    const char c0 = line[first];
-    if (c0 == '#' || c0 == '/' || c0 == '*') continue;
-    std::istringstream s(line);
-    double x, y, z, blockValue, volume;
-    std::string extra;
-    if (!(s >> x >> y >> z >> blockValue >> volume) || (s >> extra)) {
-      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
-                                     std::to_string(lineNumber) +
-                                     ": expected five numbers \"x y z block_id volume\"");
-    }
-    const int block = static_cast<int>(blockValue);
-    if (block != blockValue || block < 1) {
-      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
-                                     std::to_string(lineNumber) +
-                                     ": the block id must be a positive integer");
-    }
-    if (!(volume > 0) || !std::isfinite(x + y + z + volume)) {
-      throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
-                                     std::to_string(lineNumber) + ": the " +
-                                     (dimension == 2 ? "area" : "volume") +
-                                     " must be positive and all values finite");
-    }
-    if (dimension == 2) {
-      if (z != 0.0) {
-        throw InputError(deckPath, "text mesh \"" + fileName + "\" line " +
-                                       std::to_string(lineNumber) + ": z is " + formatNumber(z) +
-                                       "; in a 2D discretization every point has z = 0");
-      }
-      volume *= thickness;  // the fifth column is the point's area
-    }
-    cloud.globalId.push_back(static_cast<long long>(cloud.volume.size()));
-    cloud.x.insert(cloud.x.end(), {x, y, z});
-    cloud.blockId.push_back(block);
-    cloud.volume.push_back(volume);
-    cloud.blockNames.emplace(block, "block_" + std::to_string(block));
-  }
-  if (cloud.size() == 0) {
-    throw InputError(deckPath, "text mesh \"" + fileName + "\" contains no points");
-  }
-  cloud.dimension = dimension;
-  if (dimension == 2) cloud.thickness = thickness;
-  return cloud;
+  return readTextMeshShare(fileName, deckPath, dimension, thickness, MPI_COMM_SELF);
 }
 
 namespace {
 
-PointCloud tensorProduct3D(const DiscretizationConfig& c) {
+// The generators number their cells in a fixed order (x fastest, then y, then z, as Peridigm's
+// generator does); each rank makes the cells of its contiguous id range [begin, end), computing
+// every coordinate from the cell's indices exactly as a whole-grid loop would.
+PointCloud tensorProduct(const DiscretizationConfig& c, long long begin, long long end) {
   PointCloud cloud;
-  const long long nx = c.numPoints[0], ny = c.numPoints[1], nz = c.numPoints[2];
-  const double h[3] = {c.length[0] / nx, c.length[1] / ny, c.length[2] / nz};
-  const double volume = h[0] * h[1] * h[2];
-  const std::size_t n = static_cast<std::size_t>(nx * ny * nz);
+  const bool planar = c.generator == DiscretizationConfig::Generator::TensorProduct2D;
+  const long long nx = c.numPoints[0], ny = c.numPoints[1];
+  const double h[3] = {c.length[0] / nx, c.length[1] / ny,
+                       planar ? 0.0 : c.length[2] / c.numPoints[2]};
+  // The 2D generator is the 3D one without its z axis: cells in z = 0 whose volume is their area
+  // times the thickness.
+  const double volume = planar ? h[0] * h[1] * c.thickness : h[0] * h[1] * h[2];
+  if (planar) {
+    cloud.dimension = 2;
+    cloud.thickness = c.thickness;
+  }
+  const auto n = static_cast<std::size_t>(end - begin);
   cloud.x.reserve(3 * n);
   cloud.volume.assign(n, volume);
   cloud.blockId.assign(n, 1);
   cloud.globalId.resize(n);
-  // x fastest, then y, then z; ids in that order (as Peridigm's generator numbers them).
-  for (long long k = 0; k < nz; ++k)
-    for (long long j = 0; j < ny; ++j)
-      for (long long i = 0; i < nx; ++i) {
-        cloud.x.push_back(c.origin[0] + (i + 0.5) * h[0]);
-        cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
-        cloud.x.push_back(c.origin[2] + (k + 0.5) * h[2]);
-      }
-  for (std::size_t p = 0; p < n; ++p) cloud.globalId[p] = static_cast<long long>(p);
-  cloud.blockNames[1] = "block_1";
-  return cloud;
-}
-
-// The 3D generator's layout without the z axis: cell centres in z = 0, x fastest, then y; each
-// cell's volume is its area times the thickness.
-PointCloud tensorProduct2D(const DiscretizationConfig& c) {
-  PointCloud cloud;
-  cloud.dimension = 2;
-  cloud.thickness = c.thickness;
-  const long long nx = c.numPoints[0], ny = c.numPoints[1];
-  const double h[2] = {c.length[0] / nx, c.length[1] / ny};
-  const std::size_t n = static_cast<std::size_t>(nx * ny);
-  cloud.x.reserve(3 * n);
-  cloud.volume.assign(n, h[0] * h[1] * c.thickness);
-  cloud.blockId.assign(n, 1);
-  cloud.globalId.resize(n);
-  for (long long j = 0; j < ny; ++j)
-    for (long long i = 0; i < nx; ++i) {
-      cloud.x.push_back(c.origin[0] + (i + 0.5) * h[0]);
-      cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
-      cloud.x.push_back(0.0);
-    }
-  for (std::size_t p = 0; p < n; ++p) cloud.globalId[p] = static_cast<long long>(p);
+  for (long long p = begin; p < end; ++p) {
+    const long long i = p % nx, j = (p / nx) % ny, k = p / (nx * ny);
+    cloud.x.push_back(c.origin[0] + (i + 0.5) * h[0]);
+    cloud.x.push_back(c.origin[1] + (j + 0.5) * h[1]);
+    cloud.x.push_back(planar ? 0.0 : c.origin[2] + (k + 0.5) * h[2]);
+    cloud.globalId[static_cast<std::size_t>(p - begin)] = p;
+  }
   cloud.blockNames[1] = "block_1";
   return cloud;
 }
 
 // Rings of cells between the radii: each ring has about as many cells around as makes them
-// square in (r, theta); the axial spacing equals the radial one.
-PointCloud tensorProductCylinder(const DiscretizationConfig& c) {
+// square in (r, theta); the axial spacing equals the radial one. Radius fastest, then angle, then
+// axial layer.
+struct CylinderGrid {
+  explicit CylinderGrid(const DiscretizationConfig& c)
+      : dr((c.outerRadius - c.innerRadius) / c.numRadius),
+        nz(std::max<long long>(1, std::llround(c.cylinderLength / dr))),
+        dz(c.cylinderLength / nz),
+        nTheta(std::max<long long>(
+            3, std::llround(2.0 * kPi * (0.5 * (c.innerRadius + c.outerRadius)) / dr))),
+        dTheta(2.0 * kPi / nTheta) {}
+  double dr;
+  long long nz;
+  double dz;
+  long long nTheta;
+  double dTheta;
+};
+
+PointCloud tensorProductCylinder(const DiscretizationConfig& c, long long begin, long long end) {
   PointCloud cloud;
-  const double dr = (c.outerRadius - c.innerRadius) / c.numRadius;
-  const long long nz = std::max<long long>(1, std::llround(c.cylinderLength / dr));
-  const double dz = c.cylinderLength / nz;
-  const double rMid = 0.5 * (c.innerRadius + c.outerRadius);
-  const long long nTheta = std::max<long long>(3, std::llround(2.0 * kPi * rMid / dr));
-  const double dTheta = 2.0 * kPi / nTheta;
-  long long id = 0;
-  for (long long k = 0; k < nz; ++k)
-    for (long long t = 0; t < nTheta; ++t)
-      for (long long i = 0; i < c.numRadius; ++i) {
-        const double r0 = c.innerRadius + i * dr, r1 = r0 + dr;
-        const double r = 0.5 * (r0 + r1);
-        const double theta = (t + 0.5) * dTheta;
-        cloud.x.push_back(c.ringCenter[0] + r * std::cos(theta));
-        cloud.x.push_back(c.ringCenter[1] + r * std::sin(theta));
-        cloud.x.push_back(c.zOrigin + (k + 0.5) * dz);
-        cloud.volume.push_back(0.5 * (r1 * r1 - r0 * r0) * dTheta * dz);
-        cloud.blockId.push_back(1);
-        cloud.globalId.push_back(id++);
-      }
+  const CylinderGrid g(c);
+  for (long long id = begin; id < end; ++id) {
+    const long long i = id % c.numRadius, t = (id / c.numRadius) % g.nTheta;
+    const long long k = id / (c.numRadius * g.nTheta);
+    const double r0 = c.innerRadius + i * g.dr, r1 = r0 + g.dr;
+    const double r = 0.5 * (r0 + r1);
+    const double theta = (t + 0.5) * g.dTheta;
+    cloud.x.push_back(c.ringCenter[0] + r * std::cos(theta));
+    cloud.x.push_back(c.ringCenter[1] + r * std::sin(theta));
+    cloud.x.push_back(c.zOrigin + (k + 0.5) * g.dz);
+    cloud.volume.push_back(0.5 * (r1 * r1 - r0 * r0) * g.dTheta * g.dz);
+    cloud.blockId.push_back(1);
+    cloud.globalId.push_back(id);
+  }
   cloud.blockNames[1] = "block_1";
   return cloud;
+}
+
+long long generatorSize(const DiscretizationConfig& c) {
+  if (c.generator == DiscretizationConfig::Generator::Cylinder) {
+    const CylinderGrid g(c);
+    return g.nz * g.nTheta * c.numRadius;
+  }
+  return c.numPoints[0] * c.numPoints[1] * c.numPoints[2];  // numPoints[2] = 1 in 2D
 }
 
 }  // namespace
 
 PointCloud buildWholePointCloud(const DiscretizationConfig& c) {
+  // One reader for both: this rank's share when it is the only rank.
+  return buildPointCloud(c, MPI_COMM_SELF);
+}
+
+PointCloud buildPointCloud(const DiscretizationConfig& c, MPI_Comm comm) {
   if (c.type == "Exodus") {
-    PointCloud cloud = readExodusMesh(c.meshFile, c.meshFilePath, c.thickness);
-    // Keys that depend on the dimension, now that the mesh has told it.
+    PointCloud cloud = readExodusMeshShare(c.meshFile, c.meshFilePath, c.thickness, comm);
+    // Keys that depend on the dimension, now that the mesh has told it (the same on every rank).
     if (cloud.dimension == 3 && c.thicknessGiven) {
       throw InputError(c.thicknessPath,
                        "only for 2D discretizations; the Exodus mesh \"" + c.meshFile + "\" is 3D");
@@ -433,40 +390,17 @@ PointCloud buildWholePointCloud(const DiscretizationConfig& c) {
     return cloud;
   }
   if (c.type == "Text File") {
-    return readTextMesh(c.meshFile, c.meshFilePath, c.dimension, c.thickness);
+    return readTextMeshShare(c.meshFile, c.meshFilePath, c.dimension, c.thickness, comm);
   }
-  if (c.generator == DiscretizationConfig::Generator::TensorProduct3D) return tensorProduct3D(c);
-  if (c.generator == DiscretizationConfig::Generator::TensorProduct2D) return tensorProduct2D(c);
-  return tensorProductCylinder(c);
-}
-
-PointCloud buildPointCloud(const DiscretizationConfig& c, MPI_Comm comm) {
-  // TODO(distributed readers): every rank still reads the whole cloud and keeps its slice.
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  PointCloud whole = buildWholePointCloud(c);
-  whole.globalNumPoints = static_cast<long long>(whole.size());
-  if (size == 1) return whole;
-  const std::size_t n = whole.size(), begin = n * rank / size, end = n * (rank + 1) / size;
-  PointCloud share;
-  share.x.assign(whole.x.begin() + 3 * begin, whole.x.begin() + 3 * end);
-  share.volume.assign(whole.volume.begin() + begin, whole.volume.begin() + end);
-  share.blockId.assign(whole.blockId.begin() + begin, whole.blockId.begin() + end);
-  share.globalId.assign(whole.globalId.begin() + begin, whole.globalId.begin() + end);
-  share.blockNames = whole.blockNames;
-  share.dimension = whole.dimension;
-  share.thickness = whole.thickness;
-  share.globalNumPoints = whole.globalNumPoints;
-  std::vector<long long> mine(share.globalId);
-  std::sort(mine.begin(), mine.end());
-  for (const auto& set : whole.pointSets) {
-    PointSet s{set.name, {}};
-    for (long long g : set.globalIds)
-      if (std::binary_search(mine.begin(), mine.end(), g)) s.globalIds.push_back(g);
-    share.pointSets.push_back(std::move(s));
-  }
-  return share;
+  const Slicing ids{generatorSize(c), size};
+  PointCloud cloud = c.generator == DiscretizationConfig::Generator::Cylinder
+                         ? tensorProductCylinder(c, ids.begin(rank), ids.begin(rank + 1))
+                         : tensorProduct(c, ids.begin(rank), ids.begin(rank + 1));
+  cloud.globalNumPoints = ids.n;
+  return cloud;
 }
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& c) {

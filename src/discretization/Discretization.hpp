@@ -87,11 +87,13 @@ DiscretizationConfig readDiscretizationConfig(ListReader discretization);
 // files by byte ranges, generators only their slice.
 PointCloud buildPointCloud(const DiscretizationConfig& config, MPI_Comm comm);
 
-// Not collective: the whole cloud on the calling rank (tests and tools on small meshes).
+// Not collective: the whole cloud on the calling rank (tests and tools on small meshes); it is
+// buildPointCloud on MPI_COMM_SELF, so MPI must be initialized.
 PointCloud buildWholePointCloud(const DiscretizationConfig& config);
 
 NeighborhoodRule neighborhoodRule(const DiscretizationConfig& config);
 
+// The whole text mesh on the calling rank (readTextMeshShare on MPI_COMM_SELF).
 // Reads `x y z block_id volume` lines ('#', '/', '*' start comments). With dimension 2 the cloud
 // is planar: every z must be 0 and the fifth column is the point's area, multiplied by thickness.
 PointCloud readTextMesh(const std::string& fileName, const std::string& deckPath, int dimension = 3,

@@ -128,4 +128,28 @@ void triCentroid(const double nodes[3][2], double centroid[2]) {
   for (int k = 0; k < 2; ++k) centroid[k] = (nodes[0][k] + nodes[1][k] + nodes[2][k]) / 3.0;
 }
 
+ElementKind classify(const std::string& topology, long long nodesPerElement) {
+  // Exodus names planar quads QUAD/QUAD4/QUAD8/QUAD9 (SHELL4 etc. when written by a 3D mesher)
+  // and triangles TRI/TRI3/TRI6/TRI7/TRIANGLE (TRISHELL for shells); higher-order elements are
+  // read through their corner nodes, which come first.
+  if (topology.rfind("QUAD", 0) == 0 || topology.rfind("SHELL", 0) == 0) {
+    if (nodesPerElement == 4 || nodesPerElement == 8 || nodesPerElement == 9) {
+      return ElementKind::Quad;
+    }
+  } else if (topology.rfind("TRI", 0) == 0) {
+    if (nodesPerElement == 3 || nodesPerElement == 6 || nodesPerElement == 7) {
+      return ElementKind::Tri;
+    }
+  } else if (topology.rfind("HEX", 0) == 0) {
+    if (nodesPerElement == 8 || nodesPerElement == 20 || nodesPerElement == 27) {
+      return ElementKind::Hex;
+    }
+  } else if (topology.rfind("TET", 0) == 0) {
+    if (nodesPerElement == 4 || nodesPerElement == 10) return ElementKind::Tet;
+  } else if (topology == "SPHERE") {
+    if (nodesPerElement == 1) return ElementKind::Sphere;
+  }
+  return ElementKind::Unsupported;
+}
+
 }  // namespace peridot

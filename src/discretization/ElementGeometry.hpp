@@ -14,7 +14,19 @@
 // the bilinear image of the square [-1,1]^2 with corners (-1,-1), (+1,-1), (+1,+1), (-1,+1).
 // TRI3 (and the corner nodes 1-3 of TRI6/TRI7): any order. Planar elements are in the x-y plane.
 
+#include <string>
+
 namespace peridot {
+
+// The element types the Exodus reader turns into points.
+enum class ElementKind { Hex, Tet, Sphere, Quad, Tri, Unsupported };
+
+inline bool isPlanar(ElementKind kind) {
+  return kind == ElementKind::Quad || kind == ElementKind::Tri;
+}
+
+// The kind of an Exodus element block from its upper-case topology name and nodes per element.
+ElementKind classify(const std::string& topology, long long nodesPerElement);
 
 // Signed volume of the trilinear hexahedron: the integral of det(dx/dxi) over [-1,1]^3, computed
 // with 2x2x2 Gauss points (exact: the Jacobian determinant is at most quadratic in each reference

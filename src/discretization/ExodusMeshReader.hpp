@@ -6,7 +6,8 @@
 
 namespace peridot {
 
-// Serial read of the whole mesh file (any rank may call it; no communication).
+// The whole mesh on the calling rank: readExodusMeshShare (DistributedExodusReader.hpp) on
+// MPI_COMM_SELF, so MPI must be initialized; no communication with other ranks.
 //
 // - Element types: HEX8/HEX/HEX20/HEX27 (the 8 corner nodes are used), TET4/TET/TETRA/TET10 (the
 //   4 corner nodes), SPHERE (one node; the volume is the element's second attribute). Other types
