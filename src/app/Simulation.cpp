@@ -387,15 +387,17 @@ void Simulation::reportMemory(std::ostream& out) {
                                          topology_.bondOffsets.size() * sizeof(std::int64_t) +
                                          topology_.bondSides.size()),
                      peakResidentBytes()};
-  double total[3];
+  double total[3], largest = 0;
   MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, comm_);
+  // On a cluster the largest rank decides whether a run fits in a node's memory.
+  MPI_Allreduce(&local[2], &largest, 1, MPI_DOUBLE, MPI_MAX, comm_);
   if (rank_ != 0) return;
   const double bonds = static_cast<double>(std::max(1LL, topology_.globalNumBonds));
-  char text[256];
+  char text[320];
   std::snprintf(text, sizeof text,
                 "Memory (all ranks): fields %.1f MB, bond lists %.1f MB, peak resident %.1f MB "
-                "= %.1f bytes per bond\n",
-                total[0] / 1e6, total[1] / 1e6, total[2] / 1e6, total[2] / bonds);
+                "= %.1f bytes per bond; largest rank's peak resident %.1f MB\n",
+                total[0] / 1e6, total[1] / 1e6, total[2] / 1e6, total[2] / bonds, largest / 1e6);
   out << text;
 }
 
