@@ -1,8 +1,10 @@
 #include "output/OutputDistribution.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <numeric>
 
+#include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 
 namespace peridot {
@@ -52,6 +54,16 @@ OutputDistribution::OutputDistribution(const Topology& t)
   for (int i = 0; i < n; ++i) ++localCounts[ownedBlock[i] = blockIndex(t.blockId[i])];
   blockCounts_.assign(numBlocks, 0);
   MPI_Allreduce(localCounts.data(), blockCounts_.data(), numBlocks, MPI_LONG_LONG, MPI_SUM, comm_);
+  if (std::accumulate(blockCounts_.begin(), blockCounts_.end(), 0LL) != numPoints_)
+    throw RunError("output: the ranks own " +
+                   std::to_string(std::accumulate(blockCounts_.begin(), blockCounts_.end(), 0LL)) +
+                   " points, the topology says " + std::to_string(numPoints_));
+  // MPI counts are ints: the largest message is 4 values (id and position) per point of a rank.
+  throwIfAnyRank(4LL * std::max<long long>(n, localCount()) > INT_MAX
+                     ? "output: too many points on rank " + std::to_string(rank_) +
+                           " for one MPI message; run on more ranks"
+                     : "",
+                 comm_, true);
   std::vector<long long> blockOffset(numBlocks, 0);
   for (int b = 1; b < numBlocks; ++b) blockOffset[b] = blockOffset[b - 1] + blockCounts_[b - 1];
 
@@ -99,14 +111,16 @@ OutputDistribution::OutputDistribution(const Topology& t)
   MPI_Exscan(homeBlockCounts.data(), before.data(), numBlocks, MPI_LONG_LONG, MPI_SUM, comm_);
   if (rank_ == 0) std::fill(before.begin(), before.end(), 0);  // Exscan leaves rank 0 undefined
   std::vector<long long> homedPosition(numHomed);
+  std::string problem;
   for (int k = 0; k < numHomed; ++k) {
     const int j = byKey[k];
     if (k > 0 && homed[2 * byKey[k - 1]] == homed[2 * j] &&
-        homed[2 * byKey[k - 1] + 1] == homed[2 * j + 1])
-      throw RunError("output: global id " + std::to_string(homed[2 * j + 1]) + " is owned twice");
+        homed[2 * byKey[k - 1] + 1] == homed[2 * j + 1] && problem.empty())
+      problem = "output: global id " + std::to_string(homed[2 * j + 1]) + " is owned twice";
     const auto b = static_cast<std::size_t>(homed[2 * j]);
     homedPosition[j] = blockOffset[b] + before[b]++;
   }
+  throwIfAnyRank(problem, comm_, true);
   homed.clear();
   homed.shrink_to_fit();
   std::vector<long long> sentPosition(n);
@@ -142,8 +156,10 @@ OutputDistribution::OutputDistribution(const Topology& t)
   recvDispls_ = displacements(recvCounts_);
   std::vector<long long> positions;
   move(ownedPosition_.data(), 1, MPI_LONG_LONG, positions);  // recvSlot_ empty: arrival order
-  if (static_cast<long long>(positions.size()) != localCount())
-    throw RunError("output: the points do not cover the output positions once each");
+  throwIfAnyRank(static_cast<long long>(positions.size()) != localCount()
+                     ? "output: the points do not cover the output positions once each"
+                     : "",
+                 comm_, true);
   recvSlot_.resize(positions.size());
   for (std::size_t k = 0; k < positions.size(); ++k) recvSlot_[k] = positions[k] - localBegin();
 
@@ -161,13 +177,6 @@ long long OutputDistribution::rangeBegin(int r) const {
   return numPoints_ / numRanks_ * r + numPoints_ % numRanks_ * r / numRanks_;
 }
 
-long long OutputDistribution::largestRange() const {
-  long long largest = 0;
-  for (int r = 0; r < numRanks_; ++r)
-    largest = std::max(largest, rangeBegin(r + 1) - rangeBegin(r));
-  return largest;
-}
-
 template <class T>
 void OutputDistribution::move(const T* owned, int components, MPI_Datatype type,
                               std::vector<T>& range) const {
@@ -175,7 +184,9 @@ void OutputDistribution::move(const T* owned, int components, MPI_Datatype type,
   std::vector<T> send(sendOrder_.size() * c);
   for (std::size_t k = 0; k < sendOrder_.size(); ++k)
     std::copy_n(owned + sendOrder_[k] * c, c, send.begin() + k * c);
-  const std::size_t numReceived = static_cast<std::size_t>(localCount());
+  // What arrives (the local range once the plan is checked).
+  const std::size_t numReceived =
+      static_cast<std::size_t>(std::accumulate(recvCounts_.begin(), recvCounts_.end(), 0LL));
   std::vector<T> received(numReceived * c);
   MPI_Alltoallv(send.data(), scaled(sendCounts_, components).data(),
                 scaled(sendDispls_, components).data(), type, received.data(),
@@ -204,12 +215,16 @@ std::vector<long long> OutputDistribution::setInRange(
     const std::vector<long long>& ownedSetIds) const {
   // Flag the members (owned order), move the flags to the ranges, read the positions there.
   std::vector<long long> member(ownedIdSorted_.size(), 0);
+  std::string problem;
   for (long long id : ownedSetIds) {
     auto it = std::lower_bound(ownedIdSorted_.begin(), ownedIdSorted_.end(), id);
-    if (it == ownedIdSorted_.end() || *it != id)
-      throw RunError("output: node set member " + std::to_string(id) + " is not an owned point");
+    if (it == ownedIdSorted_.end() || *it != id) {
+      problem = "output: node set member " + std::to_string(id) + " is not an owned point";
+      break;
+    }
     member[ownedIdOrder_[it - ownedIdSorted_.begin()]] = 1;
   }
+  throwIfAnyRank(problem, comm_, true);
   std::vector<long long> flags, positions;
   move(member.data(), 1, MPI_LONG_LONG, flags);
   for (std::size_t k = 0; k < flags.size(); ++k)

@@ -30,7 +30,6 @@ class OutputDistribution {
   long long rangeBegin(int r) const;
   long long localBegin() const { return rangeBegin(rank_); }
   long long localCount() const { return rangeBegin(rank_ + 1) - rangeBegin(rank_); }
-  long long largestRange() const;
   // Output position of each owned point (owned order).
   const std::vector<long long>& ownedPosition() const { return ownedPosition_; }
 

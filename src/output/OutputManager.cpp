@@ -1,12 +1,23 @@
 #include "output/OutputManager.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <numeric>
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 
 namespace peridot {
+
+namespace {
+
+std::string formatTime(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", t);
+  return text;
+}
+
+}  // namespace
 
 OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
                              int dimension,
@@ -120,7 +131,8 @@ void OutputManager::open(const double* resumeTime, std::vector<std::string>* mes
         if (f.writer) {
           created = 0;
           message = "Output: continuing \"" + f.path + "\" after its record " +
-                    std::to_string(f.writer->recordsWritten());
+                    std::to_string(f.writer->recordsWritten()) +
+                    " (the last at time <= " + formatTime(*resumeTime) + ")";
           return;
         }
         message = "Output: \"" + f.path + "\" not continued (" + whyNot + "); created anew";
@@ -195,10 +207,12 @@ void OutputManager::writeMesh(File& f) {
 
 std::vector<std::string> OutputManager::resume(long long step, double time) {
   if (opened_) throw RunError("OutputManager::resume must come before the first write");
-  (void)step;  // the records are told apart by their times
   Timers::Scope timer(timers_, "Output");
   std::vector<std::string> messages;
+  // The records are told apart by their times (a file has no step numbers); the step goes
+  // into the messages, for the log.
   open(&time, &messages);
+  for (auto& m : messages) m += " [restart at step " + std::to_string(step) + "]";
   return messages;
 }
 
