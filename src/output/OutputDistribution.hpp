@@ -61,7 +61,9 @@ class OutputDistribution {
 };
 
 // Rank 0 receives every rank's range of a field, one range at a time, and hands each to
-// `write(firstPosition, count, values)`; the other ranks send theirs. Collective.
+// `write(firstPosition, count, values)`; the other ranks send theirs. Collective. The next
+// range is received while one is written (two buffers: rank 0 holds at most its own range and
+// two others).
 template <class T, class Write>
 void streamRangesToRoot(const OutputDistribution& d, MPI_Comm comm, const std::vector<T>& range,
                         int components, MPI_Datatype type, Write&& write) {
@@ -72,13 +74,20 @@ void streamRangesToRoot(const OutputDistribution& d, MPI_Comm comm, const std::v
     MPI_Send(range.data(), static_cast<int>(range.size()), type, 0, 0, comm);
     return;
   }
-  write(d.localBegin(), d.localCount(), range.data());
-  std::vector<T> buffer;
-  for (int r = 1; r < size; ++r) {
+  std::vector<T> buffer[2];
+  MPI_Request request = MPI_REQUEST_NULL;
+  auto post = [&](int r) {
     const long long count = d.rangeBegin(r + 1) - d.rangeBegin(r);
-    buffer.resize(static_cast<std::size_t>(count * components));
-    MPI_Recv(buffer.data(), static_cast<int>(buffer.size()), type, r, 0, comm, MPI_STATUS_IGNORE);
-    write(d.rangeBegin(r), count, buffer.data());
+    std::vector<T>& b = buffer[r % 2];
+    b.resize(static_cast<std::size_t>(count * components));
+    MPI_Irecv(b.data(), static_cast<int>(b.size()), type, r, 0, comm, &request);
+  };
+  if (size > 1) post(1);
+  write(d.localBegin(), d.localCount(), range.data());
+  for (int r = 1; r < size; ++r) {
+    MPI_Wait(&request, MPI_STATUS_IGNORE);
+    if (r + 1 < size) post(r + 1);
+    write(d.rangeBegin(r), d.rangeBegin(r + 1) - d.rangeBegin(r), buffer[r % 2].data());
   }
 }
 
