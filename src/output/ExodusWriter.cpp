@@ -190,7 +190,10 @@ std::unique_ptr<ExodusWriter> ExodusWriter::resume(const std::string& fileName,
       return nullptr;
     }
   }
-  w->step_ = static_cast<int>(std::upper_bound(times.begin(), times.end(), time) - times.begin());
+  // The first record after `time` (a linear scan: records left over from an earlier resumed run
+  // need not be in time order after that point).
+  w->step_ = static_cast<int>(
+      std::find_if(times.begin(), times.end(), [&](double t) { return t > time; }) - times.begin());
   return w;
 }
 
@@ -249,6 +252,7 @@ void ExodusWriter::beginRecord(double time, const std::vector<double>& globals) 
 
 void ExodusWriter::putNodal(int variable, long long first, long long count, const double* values) {
   if (count <= 0) return;
+  errno = 0;  // so that a failure reports its own OS reason, not an older one
   check(ex_put_partial_nodal_var(exoid_, step_, variable + 1, first + 1, count, values),
         "ex_put_partial_nodal_var");
 }
@@ -256,6 +260,7 @@ void ExodusWriter::putNodal(int variable, long long first, long long count, cons
 void ExodusWriter::putElement(int variable, long long first, long long count,
                               const double* values) {
   // A piece of positions may span blocks: one call per block part.
+  errno = 0;
   for (std::size_t b = 0; b < blockIds_.size(); ++b) {
     const long long lo = std::max(first, blockFirst_[b]);
     const long long hi = std::min(first + count, blockFirst_[b + 1]);
@@ -268,6 +273,7 @@ void ExodusWriter::putElement(int variable, long long first, long long count,
 
 void ExodusWriter::endRecord() {
   // Flush every record, so a run that stops early leaves a readable file.
+  errno = 0;
   check(ex_update(exoid_), "ex_update");
 }
 
