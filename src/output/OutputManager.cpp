@@ -1,11 +1,23 @@
 #include "output/OutputManager.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <numeric>
 
+#include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 
 namespace peridot {
+
+namespace {
+
+std::string formatTime(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", t);
+  return text;
+}
+
+}  // namespace
 
 OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
                              int dimension,
@@ -21,7 +33,7 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     auto it =
         std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
     if (it == files_.end()) {
-      files_.push_back(File{path, {}, {}, nullptr});
+      files_.push_back(File{path, {}, {}, {}, nullptr});
       it = files_.end() - 1;
     }
     for (const auto& v : out.variables)
@@ -29,96 +41,38 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
         it->variables.push_back(v);
     it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
   }
-  numPoints_ = topology.globalNumPoints;
   dimension_ = dimension == 2 ? 2 : 3;
+  distribution_ = std::make_unique<OutputDistribution>(topology);
+  nodeSets_ = nodeSets;
 
-  // TODO(bounded output): rank 0 gathers every point's id, block and position.
-  int size = topology.numRanks;
-  gatherCounts_.assign(size, 0);
-  gatherDispls_.assign(size, 0);
-  int numOwned = topology.numOwned;
-  MPI_Gather(&numOwned, 1, MPI_INT, gatherCounts_.data(), 1, MPI_INT, 0, topology.comm);
-  for (int r = 1; r < size; ++r) gatherDispls_[r] = gatherDispls_[r - 1] + gatherCounts_[r - 1];
-  std::vector<long long> ownedIds(topology.overlapGlobalId.begin(),
-                                  topology.overlapGlobalId.begin() + topology.numOwned);
-  const bool root = topology.rank == 0;
-  std::vector<long long> allIds(root ? static_cast<std::size_t>(numPoints_) : 0);
-  MPI_Gatherv(ownedIds.data(), numOwned, MPI_LONG_LONG, allIds.data(), gatherCounts_.data(),
-              gatherDispls_.data(), MPI_LONG_LONG, 0, topology.comm);
-  std::vector<int> allBlocks(root ? static_cast<std::size_t>(numPoints_) : 0);
-  MPI_Gatherv(topology.blockId.data(), numOwned, MPI_INT, allBlocks.data(), gatherCounts_.data(),
-              gatherDispls_.data(), MPI_INT, 0, topology.comm);
-  std::vector<double> allX(root ? static_cast<std::size_t>(3 * numPoints_) : 0);
-  {
-    std::vector<int> c3(gatherCounts_), d3(gatherDispls_);
-    for (int r = 0; r < size; ++r) c3[r] *= 3, d3[r] *= 3;
-    MPI_Gatherv(topology.referencePosition.data(), 3 * numOwned, MPI_DOUBLE, allX.data(), c3.data(),
-                d3.data(), MPI_DOUBLE, 0, topology.comm);
-  }
-  std::map<std::string, std::vector<long long>> allSets;
-  for (const auto& kv : nodeSets) {
-    const int m = static_cast<int>(kv.second.size());
-    std::vector<int> c(size), dsp(size, 0);
-    MPI_Gather(&m, 1, MPI_INT, c.data(), 1, MPI_INT, 0, topology.comm);
-    for (int r = 1; r < size; ++r) dsp[r] = dsp[r - 1] + c[r - 1];
-    std::vector<long long> ids(root ? static_cast<std::size_t>(dsp[size - 1] + c[size - 1]) : 0);
-    MPI_Gatherv(kv.second.data(), m, MPI_LONG_LONG, ids.data(), c.data(), dsp.data(), MPI_LONG_LONG,
-                0, topology.comm);
-    allSets[kv.first] = std::move(ids);
-  }
-  if (!root) return;
-
-  // Output order: blocks by id, points by id within a block.
-  std::vector<std::size_t> order(allIds.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return allBlocks[a] != allBlocks[b] ? allBlocks[a] < allBlocks[b] : allIds[a] < allIds[b];
-  });
-  std::map<long long, long long> positionOfId;
-  for (std::size_t p = 0; p < order.size(); ++p) positionOfId[allIds[order[p]]] = p;
-  positionOfReceived_.resize(allIds.size());
-  for (std::size_t k = 0; k < allIds.size(); ++k)
-    positionOfReceived_[k] = positionOfId.at(allIds[k]);
-
-  ExodusLayout layout;
-  layout.dimension = dimension_;
-  for (std::size_t p : order) {
-    layout.ids.push_back(allIds[p] + 1);
-    layout.x.push_back(allX[3 * p]);
-    layout.y.push_back(allX[3 * p + 1]);
-    layout.z.push_back(allX[3 * p + 2]);
-    if (layout.blockIds.empty() || layout.blockIds.back() != allBlocks[p]) {
-      layout.blockIds.push_back(allBlocks[p]);
-      layout.blockNames.push_back(blockNames.at(allBlocks[p]));
-      layout.blockCounts.push_back(0);
-    }
-    ++layout.blockCounts.back();
-  }
-  for (const auto& kv : allSets) {
-    ExodusLayout::Set s;
-    s.name = kv.first;
-    for (long long g : kv.second) s.positions.push_back(static_cast<int>(positionOfId.at(g)));
-    std::sort(s.positions.begin(), s.positions.end());
-    layout.nodeSets.push_back(s);
+  // What every file holds besides the per-point data (the same on every rank).
+  ExodusHeader header;
+  header.dimension = dimension_;
+  header.numPoints = distribution_->numPoints();
+  header.blockIds = distribution_->blockIds();
+  header.blockCounts = distribution_->blockCounts();
+  for (int id : header.blockIds) header.blockNames.push_back(blockNames.at(id));
+  for (const auto& kv : nodeSets_) {
+    long long mine = static_cast<long long>(kv.second.size()), total = 0;
+    MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, topology.comm);
+    header.setNames.push_back(kv.first);
+    header.setSizes.push_back(total);
   }
   for (auto& f : files_) {
-    std::vector<std::string> nodal, element, global;
+    f.header = header;
     const char* axes[3] = {"X", "Y", "Z"};
     for (const auto& v : f.variables) {
       const int c = source.components(v);
       if (c == 3) {
-        for (int d = 0; d < dimension_; ++d) nodal.push_back(v + axes[d]);
+        for (int d = 0; d < dimension_; ++d) f.header.nodalNames.push_back(v + axes[d]);
       } else if (c == 1) {
-        element.push_back(v);
+        f.header.elementNames.push_back(v);
+      } else if (source.globalSize(v) == 3) {
+        for (int d = 0; d < dimension_; ++d) f.header.globalNames.push_back(v + axes[d]);
       } else {
-        if (source.globalSize(v) == 3) {
-          for (int d = 0; d < dimension_; ++d) global.push_back(v + axes[d]);
-        } else {
-          global.push_back(v);
-        }
+        f.header.globalNames.push_back(v);
       }
     }
-    f.writer = std::make_unique<ExodusWriter>(f.path, layout, nodal, element, global);
   }
 }
 
@@ -146,59 +100,174 @@ bool OutputManager::due(long long step) const {
   return false;
 }
 
-void OutputManager::gather(const std::vector<double>& owned, int components,
-                           std::vector<double>& out) {
-  std::vector<int> counts(gatherCounts_), displs(gatherDispls_);
-  for (auto& c : counts) c *= components;
-  for (auto& d : displs) d *= components;
-  std::vector<double> received(
-      topology_.rank == 0 ? static_cast<std::size_t>(numPoints_ * components) : 0);
-  MPI_Gatherv(owned.data(), topology_.numOwned * components, MPI_DOUBLE, received.data(),
-              counts.data(), displs.data(), MPI_DOUBLE, 0, topology_.comm);
-  if (topology_.rank != 0) return;
-  out.assign(static_cast<std::size_t>(numPoints_ * components), 0.0);
-  for (std::size_t k = 0; k < positionOfReceived_.size(); ++k)
-    for (int c = 0; c < components; ++c)
-      out[positionOfReceived_[k] * components + c] = received[k * components + c];
+template <class Action>
+void OutputManager::onRoot(Action&& action) {
+  if (topology_.rank != 0 || !error_.empty()) return;
+  try {
+    action();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    if (error_.empty()) error_ = "output failed";
+  }
+}
+
+void OutputManager::raiseErrors() {
+  std::string message;
+  message.swap(error_);
+  throwIfAnyRank(message, topology_.comm, /*duringRun=*/true);
+}
+
+void OutputManager::open(const double* resumeTime, std::vector<std::string>* messages) {
+  opened_ = true;
+  for (auto& f : files_) {
+    // Rank 0 decides between continuing and creating; every rank learns which (the mesh is
+    // written collectively).
+    int created = 1;
+    std::string message;
+    onRoot([&] {
+      if (resumeTime != nullptr) {
+        std::string whyNot;
+        f.writer = ExodusWriter::resume(f.path, f.header, *resumeTime, whyNot);
+        if (f.writer) {
+          created = 0;
+          message = "Output: continuing \"" + f.path + "\" after its record " +
+                    std::to_string(f.writer->recordsWritten()) +
+                    " (the last at time <= " + formatTime(*resumeTime) + ")";
+          return;
+        }
+        message = "Output: \"" + f.path + "\" not continued (" + whyNot + "); created anew";
+      }
+      f.writer = std::make_unique<ExodusWriter>(f.path, f.header);
+    });
+    raiseErrors();
+    MPI_Bcast(&created, 1, MPI_INT, 0, topology_.comm);
+    if (created) writeMesh(f);
+    if (messages == nullptr) continue;
+    int length = static_cast<int>(message.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, topology_.comm);
+    message.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(message.data(), length, MPI_CHAR, 0, topology_.comm);
+    messages->push_back(message);
+  }
+}
+
+void OutputManager::writeMesh(File& f) {
+  const OutputDistribution& d = *distribution_;
+  const int n = topology_.numOwned;
+  {
+    // Ids (exact in a double: below 2^31) and reference positions, 4 values per point.
+    std::vector<double> owned(4 * static_cast<std::size_t>(n)), range;
+    for (int i = 0; i < n; ++i) {
+      owned[4 * i] = static_cast<double>(topology_.overlapGlobalId[i] + 1);
+      for (int k = 0; k < 3; ++k) owned[4 * i + 1 + k] = topology_.referencePosition[3 * i + k];
+    }
+    d.toRange(owned.data(), 4, range);
+    owned = {};
+    std::vector<long long> ids;
+    std::vector<double> xyz;
+    streamRangesToRoot(d, topology_.comm, range, 4, MPI_DOUBLE,
+                       [&](long long first, long long count, const double* v) {
+                         onRoot([&] {
+                           ids.resize(static_cast<std::size_t>(count));
+                           xyz.resize(static_cast<std::size_t>(3 * count));
+                           for (long long k = 0; k < count; ++k) {
+                             ids[k] = static_cast<long long>(v[4 * k]);
+                             for (int c = 0; c < 3; ++c) xyz[3 * k + c] = v[4 * k + 1 + c];
+                           }
+                           f.writer->putMesh(first, count, ids.data(), xyz.data());
+                         });
+                       });
+  }
+  // Node sets: each rank's members within its range are consecutive entries of the set.
+  int set = 0;
+  for (const auto& kv : nodeSets_) {
+    const std::vector<long long> positions = d.setInRange(kv.second);
+    long long mine = static_cast<long long>(positions.size());
+    std::vector<long long> counts(topology_.rank == 0 ? topology_.numRanks : 0);
+    MPI_Gather(&mine, 1, MPI_LONG_LONG, counts.data(), 1, MPI_LONG_LONG, 0, topology_.comm);
+    if (topology_.rank != 0) {
+      MPI_Send(positions.data(), static_cast<int>(mine), MPI_LONG_LONG, 0, 1, topology_.comm);
+    } else {
+      onRoot([&] { f.writer->putSet(set, 0, mine, positions.data()); });
+      long long offset = mine;
+      std::vector<long long> buffer;
+      for (int r = 1; r < topology_.numRanks; ++r) {
+        buffer.resize(static_cast<std::size_t>(counts[r]));
+        MPI_Recv(buffer.data(), static_cast<int>(counts[r]), MPI_LONG_LONG, r, 1, topology_.comm,
+                 MPI_STATUS_IGNORE);
+        onRoot([&] { f.writer->putSet(set, offset, counts[r], buffer.data()); });
+        offset += counts[r];
+      }
+    }
+    ++set;
+  }
+  onRoot([&] { f.writer->endRecord(); });  // flush the mesh
+  raiseErrors();
+}
+
+std::vector<std::string> OutputManager::resume(long long step, double time) {
+  if (opened_) throw RunError("OutputManager::resume must come before the first write");
+  Timers::Scope timer(timers_, "Output");
+  std::vector<std::string> messages;
+  // The records are told apart by their times (a file has no step numbers); the step goes
+  // into the messages, for the log.
+  open(&time, &messages);
+  for (auto& m : messages) m += " [restart at step " + std::to_string(step) + "]";
+  return messages;
 }
 
 void OutputManager::write(long long step, double time) {
   Timers::Scope timer(timers_, "Output");
-  std::map<std::string, std::vector<double>> cache;  // gathered values by variable
+  if (!opened_) open(nullptr, nullptr);
+  const OutputDistribution& d = *distribution_;
+  // Each variable's values on this rank's range, computed once for all the files.
+  std::map<std::string, std::vector<double>> cache;
   for (auto& f : files_) {
     if (!fires(f, step)) continue;
-    std::vector<std::vector<double>> nodal, element;
     std::vector<double> globals;
     for (const auto& v : f.variables) {
+      if (source_.components(v) != 0) continue;
+      std::vector<double> g;
+      source_.globalVariable(v, g);
+      // A vector's z component is not written in a planar run.
+      if (g.size() == 3) g.resize(static_cast<std::size_t>(dimension_));
+      globals.insert(globals.end(), g.begin(), g.end());
+    }
+    onRoot([&] { f.writer->beginRecord(time, globals); });
+    int nodal = 0, element = 0;  // variable indices in the file
+    std::vector<double> component;
+    for (const auto& v : f.variables) {
       const int c = source_.components(v);
-      if (c == 0) {
-        std::vector<double> g;
-        source_.globalVariable(v, g);
-        // A vector's z component is not written in a planar run.
-        if (g.size() == 3) g.resize(static_cast<std::size_t>(dimension_));
-        globals.insert(globals.end(), g.begin(), g.end());
-        continue;
-      }
+      if (c == 0) continue;
       auto it = cache.find(v);
       if (it == cache.end()) {
-        std::vector<double> owned, all;
+        std::vector<double> owned, range;
         source_.nodeVariable(v, owned);
-        gather(owned, c, all);
-        it = cache.emplace(v, std::move(all)).first;
+        d.toRange(owned.data(), c, range);
+        it = cache.emplace(v, std::move(range)).first;
       }
-      if (topology_.rank != 0) continue;
-      const std::vector<double>& all = it->second;
-      if (c == 3) {
-        for (int d = 0; d < dimension_; ++d) {
-          std::vector<double> comp(static_cast<std::size_t>(numPoints_));
-          for (long long p = 0; p < numPoints_; ++p) comp[p] = all[3 * p + d];
-          nodal.push_back(std::move(comp));
-        }
-      } else {
-        element.push_back(all);
-      }
+      streamRangesToRoot(d, topology_.comm, it->second, c, MPI_DOUBLE,
+                         [&](long long first, long long count, const double* values) {
+                           onRoot([&] {
+                             if (c == 1) {
+                               f.writer->putElement(element, first, count, values);
+                               return;
+                             }
+                             component.resize(static_cast<std::size_t>(count));
+                             for (int dd = 0; dd < dimension_; ++dd) {
+                               for (long long k = 0; k < count; ++k)
+                                 component[k] = values[c * k + dd];
+                               f.writer->putNodal(nodal + dd, first, count, component.data());
+                             }
+                           });
+                         });
+      if (c == 1)
+        ++element;
+      else
+        nodal += dimension_;
     }
-    if (topology_.rank == 0) f.writer->writeRecord(time, nodal, element, globals);
+    onRoot([&] { f.writer->endRecord(); });
+    raiseErrors();
   }
 }
 

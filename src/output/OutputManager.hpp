@@ -1,7 +1,8 @@
 #pragma once
 // Output streams (`Output*` lists): which variables, how often, into which file. Streams with
 // the same file name share one file; a stream with only global variables goes to <name>.h as
-// in Peridigm. Data is gathered on rank 0, which writes one file whatever the rank count.
+// in Peridigm. One file whatever the rank count, written by rank 0 one rank's range of output
+// positions at a time (OutputDistribution): no rank holds more than O(N/P) of a field.
 #include <map>
 #include <memory>
 #include <set>
@@ -11,6 +12,7 @@
 #include "core/Timers.hpp"
 #include "deck/RunConfig.hpp"
 #include "output/ExodusWriter.hpp"
+#include "output/OutputDistribution.hpp"
 #include "parallel/Topology.hpp"
 
 namespace peridot {
@@ -29,12 +31,23 @@ class VariableSource {
 class OutputManager {
  public:
   // Collective. `nodeSets`: every set name, with the global ids of its owned points (sorted);
-  // the mesh (positions, blocks) comes from the topology's owned points.
+  // the mesh (positions, blocks) comes from the topology's owned points. Works out where each
+  // owned point goes in the files; the files themselves are created (or continued, see
+  // resume()) by the first write().
   OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
                 int dimension, const std::map<std::string, std::vector<long long>>& nodeSets,
                 const Topology& topology, VariableSource& source, Timers& timers);
   ~OutputManager();
-  // Writes the records due at `step` (step 0 is always written).
+
+  // Collective; for a run restarted from a checkpoint taken at `step` / `time`, called instead
+  // of the first write(step, time) (that record is already in the files). Each file that
+  // exists and matches this run (dimension, number of points, blocks, node sets, variable
+  // names) is continued: its records with time <= `time` are kept and the next write() goes
+  // right after them (later records of the earlier run are overwritten as the run proceeds;
+  // see doc/architecture.md section 8). A file that is missing or does not match is created
+  // anew. Returns one message per file saying which happened, and why; the same on every rank.
+  std::vector<std::string> resume(long long step, double time);
+  // Collective. Writes the records due at `step` (step 0 is always written).
   void write(long long step, double time);
   bool due(long long step) const;
   std::vector<std::string> fileNames() const;
@@ -47,19 +60,28 @@ class OutputManager {
     std::string path;
     std::vector<std::string> variables;
     std::vector<Trigger> triggers;
+    ExodusHeader header;
     std::unique_ptr<ExodusWriter> writer;  // rank 0
   };
   bool fires(const File& f, long long step) const;
-  void gather(const std::vector<double>& owned, int components, std::vector<double>& out);
+  // Collective: creates the files (or continues them: `resumeTime` set, `messages` filled).
+  void open(const double* resumeTime, std::vector<std::string>* messages);
+  void writeMesh(File& f);
+  // Rank 0 runs `action` unless an earlier one failed; the first failure is kept, and
+  // raiseErrors() (collective) throws it on every rank, so that no rank is left waiting.
+  template <class Action>
+  void onRoot(Action&& action);
+  void raiseErrors();
 
   const Topology& topology_;
   VariableSource& source_;
   Timers& timers_;
   std::vector<File> files_;
-  std::vector<int> gatherCounts_, gatherDispls_;
-  std::vector<long long> positionOfReceived_;  // rank 0: output position of each gathered point
-  long long numPoints_ = 0;
+  std::unique_ptr<OutputDistribution> distribution_;
+  std::map<std::string, std::vector<long long>> nodeSets_;  // owned members: O(N/P)
   int dimension_ = 3;  // components written per vector: 2 in a planar run (no z)
+  bool opened_ = false;
+  std::string error_;  // rank 0: the first failure since the last raiseErrors()
 };
 
 }  // namespace peridot

@@ -194,22 +194,43 @@ TEST(PlanarDiscretization, PeriodicZInTwoDimensionsIsAnError) {
 
 TEST(PlanarDiscretization, ExodusOutputRoundTripsInTwoDimensions) {
   TempFile file(tempPath("out2d.e"));
-  ExodusLayout layout;
-  layout.dimension = 2;
-  layout.ids = {4, 2, 9};
-  layout.x = {0.5, 1.5, 2.5};
-  layout.y = {-1.0, 0.25, 3.0};
-  layout.z = {0.0, 0.0, 0.0};
-  layout.blockIds = {1, 7};
-  layout.blockNames = {"plate", "stiffener"};
-  layout.blockCounts = {2, 1};
-  layout.nodeSets.push_back({"edge", {0, 2}});
+  ExodusHeader header;
+  header.dimension = 2;
+  header.numPoints = 3;
+  header.blockIds = {1, 7};
+  header.blockNames = {"plate", "stiffener"};
+  header.blockCounts = {2, 1};
+  header.setNames = {"edge"};
+  header.setSizes = {2};
+  header.nodalNames = {"DisplacementX", "DisplacementY"};
+  header.elementNames = {"Volume"};
+  header.globalNames = {"TotalX", "TotalY"};
   {
-    ExodusWriter writer(file.path, layout, {"DisplacementX", "DisplacementY"}, {"Volume"},
-                        {"TotalX", "TotalY"});
-    writer.writeRecord(0.0, {{0, 0, 0}, {0, 0, 0}}, {{0.1, 0.2, 0.3}}, {0.0, 0.0});
-    writer.writeRecord(0.5, {{1e-3, -2e-3, 3e-3}, {4e-3, 5e-3, -6e-3}}, {{0.1, 0.2, 0.3}},
-                       {2e-3, 3e-3});
+    // Written in pieces, as rank 0 writes the ranks' ranges: the pieces cross the block
+    // boundary (positions 1 and 2 are in different blocks).
+    ExodusWriter writer(file.path, header);
+    const long long ids[3] = {4, 2, 9};
+    const double xyz[9] = {0.5, -1.0, 0.0, 1.5, 0.25, 0.0, 2.5, 3.0, 0.0};
+    writer.putMesh(0, 1, ids, xyz);
+    writer.putMesh(1, 2, ids + 1, xyz + 3);
+    const long long edge[2] = {0, 2};
+    writer.putSet(0, 0, 1, edge);
+    writer.putSet(0, 1, 1, edge + 1);
+    const double zero[3] = {0, 0, 0}, volume[3] = {0.1, 0.2, 0.3};
+    writer.beginRecord(0.0, {0.0, 0.0});
+    writer.putNodal(0, 0, 3, zero);
+    writer.putNodal(1, 0, 3, zero);
+    writer.putElement(0, 0, 3, volume);
+    writer.endRecord();
+    const double ux[3] = {1e-3, -2e-3, 3e-3}, uy[3] = {4e-3, 5e-3, -6e-3};
+    writer.beginRecord(0.5, {2e-3, 3e-3});
+    writer.putNodal(0, 0, 2, ux);
+    writer.putNodal(0, 2, 1, ux + 2);
+    writer.putNodal(1, 0, 1, uy);
+    writer.putNodal(1, 1, 2, uy + 1);
+    writer.putElement(0, 0, 1, volume);
+    writer.putElement(0, 1, 2, volume + 1);
+    writer.endRecord();
   }
   const ExodusResults r = readExodusResults(file.path);
   EXPECT_EQ(r.dimension, 2);

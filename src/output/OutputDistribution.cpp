@@ -1,0 +1,264 @@
+#include "output/OutputDistribution.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <numeric>
+
+#include "core/CollectiveError.hpp"
+#include "core/Error.hpp"
+
+namespace peridot {
+
+namespace {
+
+// Displacements of an all-to-all from its counts.
+std::vector<int> displacements(const std::vector<int>& counts) {
+  std::vector<int> d(counts.size(), 0);
+  for (std::size_t r = 1; r < counts.size(); ++r) d[r] = d[r - 1] + counts[r - 1];
+  return d;
+}
+
+std::vector<int> scaled(const std::vector<int>& v, int factor) {
+  std::vector<int> out(v);
+  for (auto& x : out) x *= factor;
+  return out;
+}
+
+}  // namespace
+
+OutputDistribution::OutputDistribution(const Topology& t)
+    : comm_(t.comm), rank_(t.rank), numRanks_(t.numRanks), numPoints_(t.globalNumPoints) {
+  const int n = t.numOwned;
+  const int P = numRanks_;
+
+  // Blocks holding points: the union of every rank's blocks (O(P * blocks) on each rank).
+  std::vector<int> mine(t.blockId.begin(), t.blockId.begin() + n);
+  std::sort(mine.begin(), mine.end());
+  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+  int numMine = static_cast<int>(mine.size());
+  std::vector<int> numEach(P);
+  MPI_Allgather(&numMine, 1, MPI_INT, numEach.data(), 1, MPI_INT, comm_);
+  std::vector<int> each(std::accumulate(numEach.begin(), numEach.end(), 0));
+  MPI_Allgatherv(mine.data(), numMine, MPI_INT, each.data(), numEach.data(),
+                 displacements(numEach).data(), MPI_INT, comm_);
+  std::sort(each.begin(), each.end());
+  each.erase(std::unique(each.begin(), each.end()), each.end());
+  blockIds_ = each;
+  const int numBlocks = static_cast<int>(blockIds_.size());
+  auto blockIndex = [&](int id) {
+    return static_cast<int>(std::lower_bound(blockIds_.begin(), blockIds_.end(), id) -
+                            blockIds_.begin());
+  };
+  std::vector<long long> localCounts(numBlocks, 0);
+  std::vector<int> ownedBlock(n);
+  for (int i = 0; i < n; ++i) ++localCounts[ownedBlock[i] = blockIndex(t.blockId[i])];
+  blockCounts_.assign(numBlocks, 0);
+  MPI_Allreduce(localCounts.data(), blockCounts_.data(), numBlocks, MPI_LONG_LONG, MPI_SUM, comm_);
+  if (std::accumulate(blockCounts_.begin(), blockCounts_.end(), 0LL) != numPoints_)
+    throw RunError("output: the ranks own " +
+                   std::to_string(std::accumulate(blockCounts_.begin(), blockCounts_.end(), 0LL)) +
+                   " points, the topology says " + std::to_string(numPoints_));
+  // MPI counts are ints: the largest message is 4 values (id and position) per point of a rank.
+  throwIfAnyRank(4LL * std::max<long long>(n, localCount()) > INT_MAX
+                     ? "output: too many points on rank " + std::to_string(rank_) +
+                           " for one MPI message; run on more ranks"
+                     : "",
+                 comm_, true);
+  std::vector<long long> blockOffset(numBlocks, 0);
+  for (int b = 1; b < numBlocks; ++b) blockOffset[b] = blockOffset[b - 1] + blockCounts_[b - 1];
+
+  // Home of an id: ids cut into P equal ranges up to the largest id.
+  long long maxId = -1, localMax = -1;
+  for (int i = 0; i < n; ++i) localMax = std::max(localMax, t.overlapGlobalId[i]);
+  MPI_Allreduce(&localMax, &maxId, 1, MPI_LONG_LONG, MPI_MAX, comm_);
+  const long long idsPerHome = std::max(1LL, (maxId + 1 + P - 1) / P);
+  auto homeOf = [&](long long id) { return static_cast<int>(id / idsPerHome); };
+
+  // Send (block, id) to the homes.
+  std::vector<int> toHome(n);
+  std::iota(toHome.begin(), toHome.end(), 0);
+  std::stable_sort(toHome.begin(), toHome.end(), [&](int a, int b) {
+    return homeOf(t.overlapGlobalId[a]) < homeOf(t.overlapGlobalId[b]);
+  });
+  std::vector<int> homeCounts(P, 0), fromCounts(P);
+  std::vector<long long> pairs(2 * static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const int i = toHome[k];
+    ++homeCounts[homeOf(t.overlapGlobalId[i])];
+    pairs[2 * k] = ownedBlock[i];
+    pairs[2 * k + 1] = t.overlapGlobalId[i];
+  }
+  MPI_Alltoall(homeCounts.data(), 1, MPI_INT, fromCounts.data(), 1, MPI_INT, comm_);
+  const int numHomed = std::accumulate(fromCounts.begin(), fromCounts.end(), 0);
+  std::vector<long long> homed(2 * static_cast<std::size_t>(numHomed));
+  MPI_Alltoallv(pairs.data(), scaled(homeCounts, 2).data(),
+                displacements(scaled(homeCounts, 2)).data(), MPI_LONG_LONG, homed.data(),
+                scaled(fromCounts, 2).data(), displacements(scaled(fromCounts, 2)).data(),
+                MPI_LONG_LONG, comm_);
+  pairs.clear();
+  pairs.shrink_to_fit();
+
+  // At the home: rank among the ids of the block, offset by the same block's points on the
+  // homes before (which hold smaller ids) and by the blocks before.
+  std::vector<int> byKey(numHomed);
+  std::iota(byKey.begin(), byKey.end(), 0);
+  std::sort(byKey.begin(), byKey.end(), [&](int a, int b) {
+    return homed[2 * a] != homed[2 * b] ? homed[2 * a] < homed[2 * b]
+                                        : homed[2 * a + 1] < homed[2 * b + 1];
+  });
+  std::vector<long long> homeBlockCounts(numBlocks, 0), before(numBlocks, 0);
+  for (int k = 0; k < numHomed; ++k) ++homeBlockCounts[homed[2 * k]];
+  MPI_Exscan(homeBlockCounts.data(), before.data(), numBlocks, MPI_LONG_LONG, MPI_SUM, comm_);
+  if (rank_ == 0) std::fill(before.begin(), before.end(), 0);  // Exscan leaves rank 0 undefined
+  std::vector<long long> homedPosition(numHomed);
+  std::string problem;
+  for (int k = 0; k < numHomed; ++k) {
+    const int j = byKey[k];
+    if (k > 0 && homed[2 * byKey[k - 1]] == homed[2 * j] &&
+        homed[2 * byKey[k - 1] + 1] == homed[2 * j + 1] && problem.empty())
+      problem = "output: global id " + std::to_string(homed[2 * j + 1]) + " is owned twice";
+    const auto b = static_cast<std::size_t>(homed[2 * j]);
+    homedPosition[j] = blockOffset[b] + before[b]++;
+  }
+  throwIfAnyRank(problem, comm_, true);
+  homed.clear();
+  homed.shrink_to_fit();
+  std::vector<long long> sentPosition(n);
+  MPI_Alltoallv(homedPosition.data(), fromCounts.data(), displacements(fromCounts).data(),
+                MPI_LONG_LONG, sentPosition.data(), homeCounts.data(),
+                displacements(homeCounts).data(), MPI_LONG_LONG, comm_);
+  ownedPosition_.assign(n, 0);
+  for (int k = 0; k < n; ++k) ownedPosition_[toHome[k]] = sentPosition[k];
+
+  // The plan owned -> output ranges.
+  auto ownerOf = [&](long long p) {
+    // rangeBegin is monotone: the last r with rangeBegin(r) <= p.
+    int lo = 0, hi = P - 1;
+    while (lo < hi) {
+      const int mid = (lo + hi + 1) / 2;
+      if (rangeBegin(mid) <= p)
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+    return lo;
+  };
+  std::vector<int> dest(n);
+  sendCounts_.assign(P, 0);
+  for (int i = 0; i < n; ++i) ++sendCounts_[dest[i] = ownerOf(ownedPosition_[i])];
+  sendOrder_.resize(n);
+  std::iota(sendOrder_.begin(), sendOrder_.end(), 0);
+  std::stable_sort(sendOrder_.begin(), sendOrder_.end(),
+                   [&](int a, int b) { return dest[a] < dest[b]; });
+  sendDispls_ = displacements(sendCounts_);
+  recvCounts_.assign(P, 0);
+  MPI_Alltoall(sendCounts_.data(), 1, MPI_INT, recvCounts_.data(), 1, MPI_INT, comm_);
+  recvDispls_ = displacements(recvCounts_);
+  std::vector<long long> positions;
+  move(ownedPosition_.data(), 1, MPI_LONG_LONG, positions);  // recvSlot_ empty: arrival order
+  throwIfAnyRank(static_cast<long long>(positions.size()) != localCount()
+                     ? "output: the points do not cover the output positions once each"
+                     : "",
+                 comm_, true);
+  recvSlot_.resize(positions.size());
+  for (std::size_t k = 0; k < positions.size(); ++k) recvSlot_[k] = positions[k] - localBegin();
+
+  // Owned ids sorted, to find the owned index of a set member.
+  ownedIdOrder_.resize(n);
+  std::iota(ownedIdOrder_.begin(), ownedIdOrder_.end(), 0);
+  std::sort(ownedIdOrder_.begin(), ownedIdOrder_.end(),
+            [&](int a, int b) { return t.overlapGlobalId[a] < t.overlapGlobalId[b]; });
+  ownedIdSorted_.resize(n);
+  for (int k = 0; k < n; ++k) ownedIdSorted_[k] = t.overlapGlobalId[ownedIdOrder_[k]];
+}
+
+long long OutputDistribution::rangeBegin(int r) const {
+  // N r / P without overflow for any N < 2^63 / P.
+  return numPoints_ / numRanks_ * r + numPoints_ % numRanks_ * r / numRanks_;
+}
+
+namespace {
+
+// Copies `count` groups of C values, group k from src + from(k) * C to dst + to(k) * C; C known
+// at compile time for the usual 1, 3, 4 so that the copy is a few moves, not a memmove call.
+template <int C, class T, class From, class To>
+void copyGroups(std::size_t count, const T* src, From from, T* dst, To to) {
+  for (std::size_t k = 0; k < count; ++k)
+    for (int j = 0; j < C; ++j) dst[to(k) * C + j] = src[from(k) * C + j];
+}
+
+template <class T, class From, class To>
+void copyGroups(int c, std::size_t count, const T* src, From from, T* dst, To to) {
+  switch (c) {
+    case 1:
+      return copyGroups<1>(count, src, from, dst, to);
+    case 3:
+      return copyGroups<3>(count, src, from, dst, to);
+    case 4:
+      return copyGroups<4>(count, src, from, dst, to);
+    default:
+      for (std::size_t k = 0; k < count; ++k)
+        for (int j = 0; j < c; ++j) dst[to(k) * c + j] = src[from(k) * c + j];
+  }
+}
+
+}  // namespace
+
+template <class T>
+void OutputDistribution::move(const T* owned, int components, MPI_Datatype type,
+                              std::vector<T>& range) const {
+  const std::size_t c = static_cast<std::size_t>(components);
+  std::vector<T> send(sendOrder_.size() * c);
+  auto same = [](std::size_t k) { return k; };
+  copyGroups(
+      components, sendOrder_.size(), owned,
+      [&](std::size_t k) { return static_cast<std::size_t>(sendOrder_[k]); }, send.data(), same);
+  // What arrives (the local range once the plan is checked).
+  const std::size_t numReceived =
+      static_cast<std::size_t>(std::accumulate(recvCounts_.begin(), recvCounts_.end(), 0LL));
+  std::vector<T> received(numReceived * c);
+  MPI_Alltoallv(send.data(), scaled(sendCounts_, components).data(),
+                scaled(sendDispls_, components).data(), type, received.data(),
+                scaled(recvCounts_, components).data(), scaled(recvDispls_, components).data(),
+                type, comm_);
+  if (recvSlot_.empty()) {  // building the plan: keep the arrival order
+    range = std::move(received);
+    return;
+  }
+  range.resize(numReceived * c);
+  copyGroups(components, numReceived, received.data(), same, range.data(),
+             [&](std::size_t k) { return static_cast<std::size_t>(recvSlot_[k]); });
+}
+
+void OutputDistribution::toRange(const double* owned, int components,
+                                 std::vector<double>& range) const {
+  move(owned, components, MPI_DOUBLE, range);
+}
+
+void OutputDistribution::toRange(const long long* owned, int components,
+                                 std::vector<long long>& range) const {
+  move(owned, components, MPI_LONG_LONG, range);
+}
+
+std::vector<long long> OutputDistribution::setInRange(
+    const std::vector<long long>& ownedSetIds) const {
+  // Flag the members (owned order), move the flags to the ranges, read the positions there.
+  std::vector<long long> member(ownedIdSorted_.size(), 0);
+  std::string problem;
+  for (long long id : ownedSetIds) {
+    auto it = std::lower_bound(ownedIdSorted_.begin(), ownedIdSorted_.end(), id);
+    if (it == ownedIdSorted_.end() || *it != id) {
+      problem = "output: node set member " + std::to_string(id) + " is not an owned point";
+      break;
+    }
+    member[ownedIdOrder_[it - ownedIdSorted_.begin()]] = 1;
+  }
+  throwIfAnyRank(problem, comm_, true);
+  std::vector<long long> flags, positions;
+  move(member.data(), 1, MPI_LONG_LONG, flags);
+  for (std::size_t k = 0; k < flags.size(); ++k)
+    if (flags[k]) positions.push_back(localBegin() + static_cast<long long>(k));
+  return positions;
+}
+
+}  // namespace peridot
