@@ -479,9 +479,12 @@ void Simulation::run() {
     outputs_->write(0, time_);
     if (observer_) observer_(0, time_);
   }
-  // PENDING (OutputManager resume API): when resumed_, the output files should be reopened and
-  // cut after the checkpoint's time, outputs_->resume(firstStep_ - 1, time_); until then a
-  // continued run writes new files holding the records after the checkpoint.
+  if (resumed_) {
+    // Output files of this deck that match the run keep their records up to the checkpoint
+    // and continue after them; others (Peridigm's Run2 names its own) are created anew.
+    for (const auto& message : outputs_->resume(firstStep_ - 1, time_))
+      if (rank_ == 0) log_ << message << "\n";
+  }
 
   const double half = 0.5 * dt_;
   const int n3 = 3 * topology_.numOwned;
