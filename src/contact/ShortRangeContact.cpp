@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "neighbor/NeighborSearch.hpp"
+#include "parallel/PointExchange.hpp"
 
 namespace peridot {
 
@@ -69,16 +70,33 @@ inline bool pairForce(const double* yi, const double* yj, const double* vi, cons
 ShortRangeContact::ShortRangeContact(const ContactConfig& config, const Topology& topology,
                                      const std::vector<std::string>& blockNameOfPoint,
                                      const double* horizon, const double* volume, Timers& timers)
-    : config_(config),
-      topology_(topology),
-      horizon_(horizon),
-      volume_(volume),
-      timers_(timers),
-      blockName_(blockNameOfPoint) {
-  for (const auto& b : blockName_) {
-    auto it = std::find(blockNames_.begin(), blockNames_.end(), b);
-    blockIndex_.push_back(static_cast<int>(it - blockNames_.begin()));
-    if (it == blockNames_.end()) blockNames_.push_back(b);
+    : config_(config), topology_(topology), horizon_(horizon), volume_(volume), timers_(timers) {
+  // Halo points carry their block as an index, so every rank needs the same name list: the
+  // sorted union of the ranks' names (O(ranks x blocks) to gather, done once).
+  std::vector<std::string> mine(blockNameOfPoint);
+  std::sort(mine.begin(), mine.end());
+  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+  std::string joined;
+  for (const auto& b : mine) joined += b + '\n';
+  const int size = topology_.numRanks;
+  int len = static_cast<int>(joined.size());
+  std::vector<int> lens(size), offs(size, 0);
+  MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, topology_.comm);
+  for (int r = 1; r < size; ++r) offs[r] = offs[r - 1] + lens[r - 1];
+  std::string all(static_cast<std::size_t>(offs[size - 1] + lens[size - 1]), '\0');
+  MPI_Allgatherv(joined.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR,
+                 topology_.comm);
+  for (std::size_t start = 0; start < all.size();) {
+    const std::size_t end = all.find('\n', start);
+    blockNames_.push_back(all.substr(start, end - start));
+    start = end + 1;
+  }
+  std::sort(blockNames_.begin(), blockNames_.end());
+  blockNames_.erase(std::unique(blockNames_.begin(), blockNames_.end()), blockNames_.end());
+  blockIndex_.reserve(blockNameOfPoint.size());
+  for (const auto& b : blockNameOfPoint) {
+    blockIndex_.push_back(static_cast<int>(
+        std::lower_bound(blockNames_.begin(), blockNames_.end(), b) - blockNames_.begin()));
   }
   offsets_.assign(topology_.numOwned + 1, 0);
 }
@@ -86,58 +104,40 @@ ShortRangeContact::ShortRangeContact(const ContactConfig& config, const Topology
 void ShortRangeContact::search(const double* y) {
   Timers::Scope timer(timers_, "Contact search");
   const int n = topology_.numOwned;
-  const MPI_Comm comm = topology_.comm;
-  // Every rank sees every point's current position (the discretization is replicated anyway);
-  // block names travel as their index in a list every rank builds the same way.
-  int size = topology_.numRanks;
-  std::vector<int> counts(size), displs(size, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-  const int total = displs[size - 1] + counts[size - 1];
-  std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
-                                  topology_.overlapGlobalId.begin() + n);
-  std::vector<long long> ids(total);
-  MPI_Allgatherv(ownedIds.data(), n, MPI_LONG_LONG, ids.data(), counts.data(), displs.data(),
-                 MPI_LONG_LONG, comm);
-  auto gather = [&](const double* local, int components) {
-    std::vector<int> c(counts), d(displs);
-    for (auto& v : c) v *= components;
-    for (auto& v : d) v *= components;
-    std::vector<double> out(static_cast<std::size_t>(total) * components);
-    MPI_Allgatherv(local, n * components, MPI_DOUBLE, out.data(), c.data(), d.data(), MPI_DOUBLE,
-                   comm);
-    return out;
-  };
-  const std::vector<double> allY = gather(y, 3), allVolume = gather(volume_, 1),
-                            allHorizon = gather(horizon_, 1);
-  // Block names are global: exchange each point's name through a per-rank name table.
-  std::vector<std::string> allBlock(total);
-  {
-    std::string joined;
-    for (const auto& b : blockName_) joined += b + '\n';
-    int len = static_cast<int>(joined.size());
-    std::vector<int> lens(size), offs(size, 0);
-    MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, comm);
-    for (int r = 1; r < size; ++r) offs[r] = offs[r - 1] + lens[r - 1];
-    std::string all(static_cast<std::size_t>(offs[size - 1] + lens[size - 1]), '\0');
-    MPI_Allgatherv(joined.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR,
-                   comm);
-    std::size_t start = 0;
-    for (int k = 0; k < total; ++k) {
-      const std::size_t end = all.find('\n', start);
-      allBlock[k] = all.substr(start, end - start);
-      start = end + 1;
-    }
-  }
+  // Candidates: the owned points (first n) and a halo of the other ranks' points that lie near
+  // this rank's box of current owned positions. A contact pair is decided by the two positions
+  // alone, so every point within the search radius of an owned point is among the candidates
+  // and the lists match a search over the whole cloud. The reach gets a margin of 1e-6 of the
+  // radius so that rounding in the box test (of order an ulp of the coordinates) cannot drop a
+  // point the distance test would keep; extra halo points are harmless, the distance decides.
+  PointBatch owned;
+  owned.globalId.assign(topology_.overlapGlobalId.begin(), topology_.overlapGlobalId.begin() + n);
+  owned.x.assign(y, y + 3 * static_cast<std::size_t>(n));
+  owned.volume.assign(volume_, volume_ + n);
+  owned.horizon.assign(horizon_, horizon_ + n);
+  owned.blockId = blockIndex_;
+  const double reach = config_.searchRadius * (1.0 + 1e-6);
+  const double noBox[3] = {0, 0, 0};
+  HaloBatch halo = exchangeHalo(owned, reach, {kNoShift}, noBox, topology_.comm);
+  PointBatch& all = owned;  // owned, then the halo (sets are not used here)
+  const PointBatch& h = halo.points;
+  all.globalId.insert(all.globalId.end(), h.globalId.begin(), h.globalId.end());
+  all.x.insert(all.x.end(), h.x.begin(), h.x.end());
+  all.volume.insert(all.volume.end(), h.volume.begin(), h.volume.end());
+  all.horizon.insert(all.horizon.end(), h.horizon.begin(), h.horizon.end());
+  all.blockId.insert(all.blockId.end(), h.blockId.begin(), h.blockId.end());
+  halo = HaloBatch();
+  numHaloPoints_ = static_cast<long long>(all.size()) - n;
+  const std::size_t total = all.size();
+  const std::vector<long long>& ids = all.globalId;
 
-  // Search around the owned points (they sit at displs[rank] .. + n in the gathered arrays).
   std::vector<double> radius(total, config_.searchRadius);
   NeighborSearchInput in;
-  in.x = allY.data();
-  in.numPoints = static_cast<std::size_t>(total);
+  in.x = all.x.data();
+  in.numPoints = total;
   in.horizon = radius.data();
   std::vector<std::size_t> queries(n);
-  for (int i = 0; i < n; ++i) queries[i] = static_cast<std::size_t>(displs[topology_.rank] + i);
+  for (int i = 0; i < n; ++i) queries[i] = static_cast<std::size_t>(i);
   std::vector<long long> found;
   std::vector<std::size_t> candidates;
   findNeighbors(in, queries, found, candidates);
@@ -152,7 +152,7 @@ void ShortRangeContact::search(const double* y) {
     for (long long k = found[i]; k < found[i + 1]; ++k) {
       const std::size_t j = candidates[k];
       if (std::binary_search(bonded.begin(), bonded.end(), ids[j])) continue;  // bonded: no contact
-      if (!config_.interacts(blockName_[i], allBlock[j])) continue;
+      if (!config_.interacts(blockNames_[blockIndex_[i]], blockNames_[all.blockId[j]])) continue;
       lists[i].push_back(static_cast<long long>(j));
     }
     std::sort(lists[i].begin(), lists[i].end(),
@@ -160,7 +160,7 @@ void ShortRangeContact::search(const double* y) {
   }
   // Local numbering: owned points first, then the contact ghosts sorted by global id.
   std::unordered_map<long long, int> localOfId;
-  for (int i = 0; i < n; ++i) localOfId[ownedIds[i]] = i;
+  for (int i = 0; i < n; ++i) localOfId[ids[i]] = i;
   std::vector<std::size_t> ghosts;
   for (const auto& l : lists)
     for (long long j : l)
@@ -172,8 +172,8 @@ void ShortRangeContact::search(const double* y) {
   ghostHorizon_.resize(ghosts.size());
   for (std::size_t g = 0; g < ghosts.size(); ++g) {
     localOfId[ids[ghosts[g]]] = n + static_cast<int>(g);
-    ghostVolume_[g] = allVolume[ghosts[g]];
-    ghostHorizon_[g] = allHorizon[ghosts[g]];
+    ghostVolume_[g] = all.volume[ghosts[g]];
+    ghostHorizon_[g] = all.horizon[ghosts[g]];
     ghostIds.push_back(ids[ghosts[g]]);
   }
   offsets_.assign(n + 1, 0);
@@ -236,6 +236,18 @@ void ShortRangeContact::computeForce(const double* y, const double* v, double* c
     }
     for (int d = 0; d < 3; ++d) contactForce[3 * i + d] = f[d];
   }
+}
+
+std::vector<std::vector<long long>> ShortRangeContact::contactListIds() const {
+  const int n = topology_.numOwned;
+  std::vector<std::vector<long long>> lists(n);
+  for (int i = 0; i < n; ++i)
+    for (auto b = offsets_[i]; b < offsets_[i + 1]; ++b) {
+      const int k = neighbors_[b];
+      lists[i].push_back(k < n ? topology_.overlapGlobalId[k]
+                               : ghostMap3_->getGlobalElement(3 * (k - n)) / 3);
+    }
+  return lists;
 }
 
 }  // namespace peridot

@@ -22,8 +22,15 @@ class ShortRangeContact {
                     const std::vector<std::string>& blockNameOfPoint, const double* horizon,
                     const double* volume, Timers& timers);
 
-  // Rebuilds the contact lists from the current owned coordinates (collective).
+  // Rebuilds the contact lists from the current owned coordinates (collective). Each rank
+  // searches its owned points among themselves and a halo: the other ranks' points within the
+  // search radius of its box of current owned positions (one all-to-all; no rank sees the whole
+  // cloud unless its box covers it).
   void search(const double* y);
+  // Halo points this rank received at the last search (for tests and measurements).
+  long long numHaloPoints() const { return numHaloPoints_; }
+  // Contact lists of the owned points, as global ids in list order (for tests).
+  std::vector<std::vector<long long>> contactListIds() const;
   // Contact force density of the owned points (collective: refreshes contact ghosts).
   void computeForce(const double* y, const double* v, double* contactForce);
 
@@ -35,9 +42,9 @@ class ShortRangeContact {
   const double* horizon_;  // owned
   const double* volume_;   // owned
   Timers& timers_;
-  std::vector<std::string> blockName_;  // owned
-  std::vector<int> blockIndex_;         // owned, index into blockNames_
-  std::vector<std::string> blockNames_;
+  std::vector<int> blockIndex_;          // owned, index into blockNames_
+  std::vector<std::string> blockNames_;  // every rank's block names, sorted: same on all ranks
+  long long numHaloPoints_ = 0;
   // Contact lists: neighbours are indices into [owned points | contact ghosts].
   std::vector<std::int64_t> offsets_;
   std::vector<int> neighbors_;

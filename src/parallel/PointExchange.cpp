@@ -78,7 +78,7 @@ void exchange(const PointBatch& points, std::vector<Outgoing>& outgoing, MPI_Com
   for (int r = 0; r < size; ++r) {
     if (sendTotal > INT_MAX || recvTotal > INT_MAX || sendBytes[r] > INT_MAX ||
         recvBytes[r] > INT_MAX) {
-      throw std::runtime_error("set-up exchange of more than 2 GiB on one rank: use more ranks");
+      throw std::runtime_error("point exchange of more than 2 GiB on one rank: use more ranks");
     }
     sendCounts[r] = static_cast<int>(sendBytes[r]);
     recvCounts[r] = static_cast<int>(recvBytes[r]);
@@ -88,7 +88,7 @@ void exchange(const PointBatch& points, std::vector<Outgoing>& outgoing, MPI_Com
     recvTotal += recvBytes[r];
   }
   if (sendTotal > INT_MAX || recvTotal > INT_MAX) {
-    throw std::runtime_error("set-up exchange of more than 2 GiB on one rank: use more ranks");
+    throw std::runtime_error("point exchange of more than 2 GiB on one rank: use more ranks");
   }
   std::vector<char> sendBuffer(static_cast<std::size_t>(sendTotal));
   char* out = sendBuffer.data();

@@ -1,7 +1,8 @@
 #pragma once
-// Moving points between ranks during set-up: to their owners after a partition (migrate), and
-// copies of the points within reach of other ranks' boxes (halo), so that no rank ever needs
-// the whole cloud. Both are one MPI_Alltoallv of packed records.
+// Moving points between ranks: to their owners after a partition (migrate, set-up), and copies
+// of the points within reach of other ranks' boxes (halo: the set-up's neighbour search, and the
+// contact search on current positions), so that no rank ever needs the whole cloud. Both are
+// one MPI_Alltoallv of packed records.
 #include <mpi.h>
 
 #include <cstddef>
