@@ -528,7 +528,10 @@ void Simulation::run() {
       computeAcceleration();
       for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
     }
-    divergence_->check(step, time_, a_);
+    {
+      Timers::Scope t(timers_, "Divergence check");
+      divergence_->check(step, time_, a_);
+    }
     if (outputs_->due(step)) outputs_->write(step, time_);
     if (observer_) observer_(step, time_);
     lastStep_ = step;
