@@ -65,7 +65,12 @@ void DivergenceMonitor::check(long long step, double time, const double* a) {
     history_.clear();  // only the current run (and the step it starts from) is kept
   }
   history_.push_back(r);
-  if (r.q > kBound || (run_ >= kRunSteps && runGrowth() >= kGrowth)) fail(time);
+  // Growth from a node of a beat, or a power law from rest, slows down (its last half grows
+  // far less than its first); a geometric one does not: require both halves' growth.
+  const double lastHalf = r.q / history_[history_.size() - 1 - run_ / 2].q;
+  const bool geometric =
+      run_ >= kRunSteps && runGrowth() >= kGrowth && lastHalf >= std::sqrt(kGrowth);
+  if (r.q > kBound || geometric) fail(time);
 }
 
 std::string DivergenceMonitor::shareDescription(const Record& r) const {

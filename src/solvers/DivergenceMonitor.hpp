@@ -9,11 +9,13 @@
 //
 // Two tests, on global quantities that every rank holds after the reductions:
 //  * growth: for kRunSteps or more consecutive steps q has increased while the acceleration
-//    field reversed (correlation of a^n with a^(n-1) below kReversal), and q has grown by
-//    kGrowth or more since the run of such steps began. Physical loading does not reverse the
-//    field each step, and a stable mode near the limit only beats (its amplitude rises and
-//    falls) without sustained growth; this catches a diverging run while its displacements
-//    are still of the size of the physical ones.
+//    field reversed (correlation of a^n with a^(n-1) below kReversal), q has grown by kGrowth
+//    or more since the run of such steps began, and by sqrt(kGrowth) or more over the last
+//    half of the run. Physical loading does not reverse the field each step; a stable mode
+//    near the limit only beats, and the rise of a beat from its node (like a power law from
+//    rest) slows down, so its last half grows far less than its first, where geometric growth
+//    keeps its rate. This catches a diverging run while its displacements are still of the
+//    size of the physical ones.
 //  * bound: q > 1, the force would carry a point across its whole neighbourhood in one step.
 //    No meaningful run comes near it (it takes strains of order one), whatever its cause.
 //
