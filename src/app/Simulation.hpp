@@ -20,6 +20,7 @@
 #include "parallel/Topology.hpp"
 #include "restart/Checkpoint.hpp"
 #include "restart/RunControl.hpp"
+#include "solvers/DivergenceMonitor.hpp"
 
 namespace peridot {
 
@@ -96,6 +97,7 @@ class Simulation {
   std::function<void(long long, double)> observer_;
   std::unique_ptr<Checkpoint> checkpoint_;  // with Restart
   std::unique_ptr<RunControl> control_;
+  std::unique_ptr<DivergenceMonitor> divergence_;
   double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_
   long long firstStep_ = 1;  // the first step run() takes (after a checkpoint's step)
   long long lastStep_ = 0;   // the last step completed

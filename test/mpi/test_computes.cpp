@@ -137,7 +137,7 @@ TEST(Computes, TractionGivesSigmaTimesAreaInTotal) {
       "      Value: \"2.5 + 0*x\"\n      Surface Area: 16.0\n"
       "  Compute Class Parameters:\n" +
       compute("TopForceDensity", "Node_Set_Data", "Sum", "Top Node Set", "External_Force_Density") +
-      "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n";
+      "  Solver:\n    Final Time: 0.4\n    Verlet:\n      Fixed dt: 0.2\n";
   Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
   sim.run();
   std::vector<double> g;

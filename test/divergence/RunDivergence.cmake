@@ -1,0 +1,101 @@
+# Runs the V2 bar (V2Bar.yaml.in) at Fixed dt = RATIO x its stable time step estimate and checks
+# how the run ends. Run with `cmake -D... -P RunDivergence.cmake`. Variables:
+#   PERIDOT, PERIDOT_DIFF  executables (required)
+#   SOURCE_DIR     test/divergence (required);  WORK_DIR  scratch directory, emptied first
+#   COMP           a .comp file for peridot-diff (reading the output back)
+#   RATIO          Fixed dt over the estimate
+#   EXPECT         "diverge": a non-zero exit status, stderr naming the step, the point and the
+#                  ratio, and an output file that reads back; "finish": status 0 and "Done."
+#   NP, MPIEXEC    run under `MPIEXEC --oversubscribe -np NP` when NP is set
+#   NCDUMP         optional: with it, the output must hold more than one record
+foreach(v PERIDOT PERIDOT_DIFF SOURCE_DIR WORK_DIR COMP RATIO EXPECT)
+  if(NOT DEFINED ${v} OR "${${v}}" STREQUAL "")
+    message(FATAL_ERROR "RunDivergence.cmake: ${v} is not set")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(ids "")
+foreach(i RANGE 1 8000)
+  string(APPEND ids "${i}\n")
+endforeach()
+file(WRITE "${WORK_DIR}/all_points.txt" "${ids}")
+# CMake has no floating-point arithmetic: the time steps are RATIO x 0.1807466039904149, the
+# estimate (its printed form is checked below, so a change of the estimate shows).
+if(RATIO STREQUAL "2.1")
+  set(DT 0.3795678683798713)
+elseif(RATIO STREQUAL "1.5")
+  set(DT 0.2711199059856224)
+else()
+  message(FATAL_ERROR "RunDivergence.cmake: no time step for RATIO ${RATIO}")
+endif()
+configure_file("${SOURCE_DIR}/V2Bar.yaml.in" "${WORK_DIR}/v2.yaml" @ONLY)
+
+if(NP)
+  set(launcher "${MPIEXEC}" --oversubscribe -np ${NP})
+else()
+  set(launcher "")
+endif()
+execute_process(COMMAND ${launcher} "${PERIDOT}" v2.yaml WORKING_DIRECTORY "${WORK_DIR}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+message("exit status: ${rc}\n--- stderr ---\n${err}--- stdout ---\n${out}--------------")
+
+set(problems "")
+string(FIND "${out}" "Stable time step estimate: 0.180747\n" at)
+if(at EQUAL -1)
+  string(APPEND problems "the stable time step estimate is no longer 0.180747: update the DTs\n")
+endif()
+string(FIND "${out}" "warning: Fixed dt is ${RATIO} x the stable time step estimate" at)
+if(at EQUAL -1)
+  string(APPEND problems "stdout lacks the warning giving the ratio ${RATIO}\n")
+endif()
+if(EXPECT STREQUAL "diverge")
+  if(rc STREQUAL "0" OR NOT rc MATCHES "^[0-9]+$")
+    string(APPEND problems "expected a non-zero exit status, got \"${rc}\"\n")
+  endif()
+  foreach(re "peridot: error: the run diverged at step [0-9]+, time [0-9.e+-]+: the force on point [0-9]+ \\(block block_1\\)"
+             "since step [0-9]+ \\(x[0-9.]+ per step, reversing its direction each step\\), when the largest was on point [0-9]+ \\(block block_1\\)"
+             "is ${RATIO} x the stable estimate 0.180747")
+    if(NOT err MATCHES "${re}")
+      string(APPEND problems "stderr does not match:\n  ${re}\n")
+    endif()
+  endforeach()
+  string(FIND "${out}" "Done." at)
+  if(NOT at EQUAL -1)
+    string(APPEND problems "a diverged run printed \"Done.\"\n")
+  endif()
+  # The records written before the divergence read back.
+  execute_process(COMMAND "${PERIDOT_DIFF}" -q "${COMP}" v2.e v2.e WORKING_DIRECTORY "${WORK_DIR}"
+                  RESULT_VARIABLE drc OUTPUT_VARIABLE dout ERROR_VARIABLE dout)
+  if(NOT drc EQUAL 0)
+    string(APPEND problems "the output v2.e does not read back (peridot-diff ${drc}):\n${dout}\n")
+  endif()
+  if(NCDUMP)
+    execute_process(COMMAND "${NCDUMP}" -h v2.e WORKING_DIRECTORY "${WORK_DIR}"
+                    OUTPUT_VARIABLE header RESULT_VARIABLE nrc)
+    if(NOT nrc EQUAL 0 OR NOT header MATCHES "time_step = UNLIMITED ; // \\(([0-9]+) currently\\)")
+      string(APPEND problems "ncdump -h v2.e failed or shows no time records\n")
+    elseif(CMAKE_MATCH_1 LESS 2)
+      string(APPEND problems "v2.e holds ${CMAKE_MATCH_1} record(s), expected the ones before the divergence\n")
+    endif()
+  endif()
+elseif(EXPECT STREQUAL "finish")
+  if(NOT rc STREQUAL "0")
+    string(APPEND problems "expected exit status 0, got \"${rc}\"\n")
+  endif()
+  string(FIND "${out}" "Done." at)
+  if(at EQUAL -1)
+    string(APPEND problems "stdout lacks \"Done.\"\n")
+  endif()
+  string(FIND "${err}" "diverged" at)
+  if(NOT at EQUAL -1)
+    string(APPEND problems "a stable run was reported as diverged\n")
+  endif()
+else()
+  message(FATAL_ERROR "RunDivergence.cmake: EXPECT must be diverge or finish")
+endif()
+if(problems)
+  message(FATAL_ERROR "V2 bar at ${RATIO} x the estimate:\n${problems}")
+endif()
+message("ok: V2 bar at ${RATIO} x the estimate")
