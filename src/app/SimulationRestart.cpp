@@ -68,7 +68,9 @@ void Simulation::resume() {
 
 void Simulation::writeCheckpoint(long long step) {
   Timers::Scope t(timers_, "Checkpoint");
-  std::vector<std::string> nodeFields = {"Displacement", "Velocity", "Acceleration"};
+  // Coordinates too: y = (x + u) + dt v is not x + u to the bit, and the contact search at the
+  // first continued step (when it is a search step) reads y of the checkpoint's step.
+  std::vector<std::string> nodeFields = {"Displacement", "Velocity", "Acceleration", "Coordinates"};
   if (contact_) nodeFields.push_back(kContactSearchPositions);
   CheckpointClock clock;
   clock.step = step;

@@ -2,12 +2,15 @@
 # RunRestart.cmake and compares the last output record with an uninterrupted run, bit for bit:
 #   restart_split_<deck>: 0 -> T/2 on 2 ranks with Restart, then T/2 -> T on 3 ranks with
 #                         Peridigm's continuation deck (Initial Time T/2, another output name)
+#   restart_peridigm_perforation: the same in Peridigm's form (XML decks, an Exodus mesh)
 #   restart_signal:       a run cut by SIGTERM after its first periodic checkpoint, then the same
 #                         command again on another rank count
 #   restart_refused:      a truncated checkpoint, one from another deck and one from another mesh
 #                         are refused with messages naming the file and the mismatch
 add_executable(last_record_diff ${CMAKE_CURRENT_LIST_DIR}/last_record_diff.cpp)
 target_link_libraries(last_record_diff PRIVATE peridot_core)
+add_executable(make_perforation_mesh ${CMAKE_CURRENT_LIST_DIR}/make_perforation_mesh.cpp)
+target_link_libraries(make_perforation_mesh PRIVATE ExodusII::ExodusII peridot_warnings)
 
 set(PERIDOT_RESTART_DIR "${CMAKE_CURRENT_LIST_DIR}")
 function(peridot_restart_test name mode deck final half frequency nonzero)
@@ -19,6 +22,7 @@ function(peridot_restart_test name mode deck final half frequency nonzero)
       -DMPIEXEC=${MPIEXEC_EXECUTABLE} -DPERIDOT=$<TARGET_FILE:peridot>
       -DLAST_RECORD_DIFF=$<TARGET_FILE:last_record_diff>
       -DSIGNAL_RUN=${PERIDOT_RESTART_DIR}/signal_run.sh
+      -DMAKE_MESH=$<TARGET_FILE:make_perforation_mesh>
       -P ${PERIDOT_RESTART_DIR}/RunRestart.cmake)
   set_tests_properties(restart_${name} PROPERTIES
     ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "restart" TIMEOUT 300)
@@ -26,6 +30,8 @@ endfunction()
 
 peridot_restart_test(split_perforation split Perforation.yaml.in 2.0e-5 1.0e-5 10
                      "Damage;Contact_Force_Density")
+peridot_restart_test(peridigm_perforation peridigm PeridigmPerforation.xml.in 4.0e-2 2.0e-2 20
+                     "Damage")
 peridot_restart_test(split_lsjt split LSJT.yaml.in 1.0e-5 5.0e-6 10 "Damage")
 peridot_restart_test(signal signal Perforation.yaml.in 6.0e-5 0 10 "Damage")
 peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")

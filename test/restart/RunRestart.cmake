@@ -51,6 +51,27 @@ endfunction()
 
 set(restart_on "  Restart:\n    Restart: true")
 
+if(MODE STREQUAL "peridigm")
+  # Peridigm's form: XML decks, an Exodus mesh, `Restart` as a list, Run2 starting at Run1's
+  # Final Time with its own output file. Run1 on 2 ranks, Run2 on 3, the whole run on 1.
+  execute_process(COMMAND ${MAKE_MESH} Contact_Perforation.g WORKING_DIRECTORY "${WORK_DIR}"
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "make_perforation_mesh failed")
+  endif()
+  set(restart_xml "  <ParameterList name=\"Restart\">\n    <Parameter name=\"Restart\" type=\"bool\" value=\"true\"/>\n  </ParameterList>")
+  deck(Full.xml 0.0 ${FINAL} Full "")
+  deck(Run1.xml 0.0 ${HALF} Run1 "${restart_xml}")
+  deck(Run2.xml ${HALF} ${FINAL} Run2 "${restart_xml}")
+  run(1 Full.xml 0 log)
+  run(2 Run1.xml 0 log)
+  expect_in("${log}" "checkpoint at step")
+  run(3 Run2.xml 0 log)
+  expect_in("${log}" "Restart: continuing from checkpoint")
+  compare(Run2.e Full.e)
+  return()
+endif()
+
 deck(Full.yaml 0.0 ${FINAL} Full "")
 run(1 Full.yaml 0 log)
 
@@ -80,6 +101,15 @@ elseif(MODE STREQUAL "signal")
   expect_in("${log}" "Restart: continuing from checkpoint")
   expect_in("${log}" "Done.")
   compare(Cut.e Full.e)
+  # The rerun continued Cut.e: it holds every record of the uninterrupted run, no more.
+  foreach(f Cut.e Full.e)
+    execute_process(COMMAND ncdump -h ${f} WORKING_DIRECTORY "${WORK_DIR}" OUTPUT_VARIABLE header)
+    string(REGEX MATCH "time_step = UNLIMITED ; // \\(([0-9]+) currently\\)" found "${header}")
+    set(records_${f} "${CMAKE_MATCH_1}")
+  endforeach()
+  if(NOT records_Cut.e STREQUAL records_Full.e OR records_Cut.e STREQUAL "")
+    message(FATAL_ERROR "Cut.e holds ${records_Cut.e} records, Full.e ${records_Full.e}")
+  endif()
   # Without Restart a signal stops the run with an error status and a clear message.
   deck(NoRestart.yaml 0.0 ${FINAL} NoRestart "")
   execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} NoRestart.yaml NoRestart.e
