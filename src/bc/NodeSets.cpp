@@ -25,12 +25,12 @@ bool allIntegers(const std::string& s) {
   return any;
 }
 
-// The ids of `text` that `keep` accepts (all ids are range-checked).
+// The ids read from `in`, line by line, that `keep` accepts (all ids are range-checked): a
+// rank keeps only its own, however long the list.
 template <class Keep>
-std::vector<long long> readIds(const std::string& text, const std::string& path,
-                               const std::string& source, long long numPoints, Keep keep) {
+std::vector<long long> readIds(std::istream& in, const std::string& path, const std::string& source,
+                               long long numPoints, Keep keep) {
   std::vector<long long> ids;
-  std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -89,7 +89,8 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
       throw InputError(spec.path, "the node set is empty");
     }
     if (allIntegers(spec.value)) {
-      ids = readIds(spec.value, spec.path, "node set", maxId, keep);
+      std::istringstream text(spec.value);
+      ids = readIds(text, spec.path, "node set", maxId, keep);
     } else {
       std::string fileName = spec.value;
       fileName.erase(0, fileName.find_first_not_of(" \t"));
@@ -99,9 +100,7 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
         throw InputError(
             spec.path, "\"" + spec.value + "\" is neither a list of point ids nor a readable file");
       }
-      std::stringstream text;
-      text << in.rdbuf();
-      ids = readIds(text.str(), spec.path, "node set file \"" + fileName + "\"", maxId, keep);
+      ids = readIds(in, spec.path, "node set file \"" + fileName + "\"", maxId, keep);
     }
     if (listed == 0) throw InputError(spec.path, "the node set is empty");
     std::sort(ids.begin(), ids.end());

@@ -50,8 +50,12 @@ struct Plate {
 // the left edge to x = nx/4; traction +-sigma on the layers within the horizon of the top and
 // bottom faces.
 std::string plateDeck(const Plate& p, bool writeFile = true) {
+  // ctest runs this executable at 1, 2 and 3 ranks at once in one folder: one file per job.
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const std::string file = "np" + std::to_string(ranks) + "_" + p.file;
   if (writeFile && rankOf(MPI_COMM_WORLD) == 0) {
-    FILE* f = std::fopen(p.file.c_str(), "w");
+    FILE* f = std::fopen(file.c_str(), "w");
     for (int k = 0; k < p.nz; ++k)
       for (int j = 0; j < p.ny; ++j)
         for (int i = 0; i < p.nx; ++i) {
@@ -74,7 +78,7 @@ std::string plateDeck(const Plate& p, bool writeFile = true) {
   std::ostringstream d;
   d << "Peridigm:\n"
        "  Discretization:\n    Type: Text File\n    Input Mesh File: "
-    << p.file << (p.planar ? "\n    Dimension: 2\n    Thickness: 1.0" : "")
+    << file << (p.planar ? "\n    Dimension: 2\n    Thickness: 1.0" : "")
     << "\n"
        "    Bond Filters:\n      Crack:\n        Type: Rectangular_Plane\n"
        "        Normal_X: 0.0\n        Normal_Y: 1.0\n        Normal_Z: 0.0\n"

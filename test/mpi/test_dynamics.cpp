@@ -204,9 +204,15 @@ TEST(VariableHorizon, MomentumIsConservedWithOneSidedBonds) {
 
 TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   // Two points pulled apart fast enough to break their bond; afterwards nothing acts on them.
+  // ctest runs this executable at 1, 2 and 3 ranks at once in one folder: one mesh per job.
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const std::string mesh = "two_points_np" + std::to_string(ranks) + ".txt";
   const std::string deck =
       "Peridigm:\n"
-      "  Discretization:\n    Type: Text File\n    Input Mesh File: two_points.txt\n"
+      "  Discretization:\n    Type: Text File\n    Input Mesh File: " +
+      mesh +
+      "\n"
       "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 1.0\n"
       "      Bulk Modulus: 1.0\n      Shear Modulus: 1.0\n"
       "  Damage Models:\n    D:\n      Damage Model: Critical Stretch\n      Critical Stretch: "
@@ -222,7 +228,7 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) {
-    FILE* f = std::fopen("two_points.txt", "w");
+    FILE* f = std::fopen(mesh.c_str(), "w");
     std::fprintf(f, "0 0 0 1 1\n1 0 0 1 1\n");
     std::fclose(f);
   }
@@ -251,7 +257,7 @@ TEST(BrokenBonds, PointsFlyApartBallisticallyWithoutNaN) {
   std::vector<double> u;
   sim->variables().nodeVariable("Displacement", u);
   for (double c : u) EXPECT_TRUE(std::isfinite(c));
-  if (rank == 0) std::remove("two_points.txt");
+  if (rank == 0) std::remove(mesh.c_str());
 }
 
 }  // namespace
