@@ -26,7 +26,7 @@ struct GlobalFacts {
 
 GlobalFacts globalFacts(const PointBatch& points, const TopologyOptions& opt, MPI_Comm comm) {
   GlobalFacts g;
-  double mins[5], maxs[5];  // x, y, z, horizon, -(...) trick avoided: two reductions
+  double mins[5], maxs[5];  // x, y, z, horizon, search reach (only its max is used)
   for (int k = 0; k < 5; ++k) {
     mins[k] = std::numeric_limits<double>::max();
     maxs[k] = std::numeric_limits<double>::lowest();
@@ -140,13 +140,8 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   MPI_Comm_rank(comm, &t.rank);
   MPI_Comm_size(comm, &t.numRanks);
   PointBatch points = batchOf(cloud, horizon);
-  const GlobalFacts facts0 = globalFacts(points, opt, comm);
   if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap) {
     // Partial volumes: the search reaches half a cell diagonal beyond the horizon.
-    if (facts0.differentHorizons) {
-      throw InputError("Discretization -> Partial Volumes",
-                       "needs one horizon for every point (the blocks' horizons differ)");
-    }
     opt.rule.dimension = cloud.dimension;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
       opt.rule.overlapReach =
@@ -156,7 +151,11 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
     }
     MPI_Allreduce(MPI_IN_PLACE, &opt.rule.overlapReach, 1, MPI_DOUBLE, MPI_MAX, comm);
   }
-  const GlobalFacts facts = globalFacts(points, opt, comm);  // with the overlap reach
+  const GlobalFacts facts = globalFacts(points, opt, comm);
+  if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap && facts.differentHorizons) {
+    throw InputError("Discretization -> Partial Volumes",
+                     "needs one horizon for every point (the blocks' horizons differ)");
+  }
   long long shareSize = static_cast<long long>(points.size());
   MPI_Allreduce(&shareSize, &t.globalNumPoints, 1, MPI_LONG_LONG, MPI_SUM, comm);
   std::vector<int> codes = {kNoShift};

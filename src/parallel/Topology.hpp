@@ -29,7 +29,6 @@ struct Topology {
   long long globalNumPoints = 0;
   long long globalNumBonds = 0;                // one-sided bond entries, all ranks
   std::vector<GlobalOrdinal> overlapGlobalId;  // per overlap index
-  std::vector<std::size_t> overlapCloudIndex;  // set-up only (TODO: goes with the shim)
   // Reference data per overlap point (owned, ghosts, images; an image's position includes its
   // shift): what the discretization said of the point, moved to where it is used.
   std::vector<double> referencePosition;  // 3 per overlap point
