@@ -17,7 +17,6 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
-#include "solvers/StableTimeStep.hpp"
 
 namespace peridot {
 
@@ -283,12 +282,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   time_ = config_.solver.initialTime;
   throwIfAnyRank(conditions_->applyInitial(time_, u_, v_), comm_);
 
-  {
-    std::vector<double> stiffness(topology_.numOverlap, 0.0);
-    for (const auto& b : blocks_)
-      b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
-    stableDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
-  }
+  estimateStableTimeStep();
   const auto& s = config_.solver;
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
@@ -468,7 +462,13 @@ void Simulation::run() {
     }
     log_ << "\n";
     if (planar_) log_ << "Planar (2D) run, thickness " << thickness_ << "\n";
-    log_ << "Stable time step estimate: " << stableDt_ << "\n";
+    if (s.verletLimitEstimate) {
+      log_ << "Stable time step estimate: " << stableDt_ << " (Verlet limit, "
+           << verletLimitIterations_ << " Lanczos iterations; Peridigm's estimate " << peridigmDt_
+           << ")\n";
+    } else {
+      log_ << "Stable time step estimate: " << stableDt_ << "\n";
+    }
     log_ << "Time step: " << dt_ << (s.fixedDtGiven ? " (Fixed dt)" : " (estimate x Safety Factor)")
          << ", steps: " << numSteps_ << "\n";
     if (s.fixedDtGiven && dt_ > stableDt_) {

@@ -67,6 +67,9 @@ class Simulation {
   void computeAcceleration();
   void evaluateForces(long long step);
   void checkFinite(long long step, double time);
+  // Stable time step (SimulationTimeStep.cpp): Peridigm's estimate, and with "Verlet Limit"
+  // the Lanczos estimate of the linearized problem's true limit.
+  void estimateStableTimeStep();
   // Restart (SimulationRestart.cpp): continue from the checkpoint, write one, search contact.
   void resume();
   void writeCheckpoint(long long step);
@@ -93,6 +96,8 @@ class Simulation {
   std::vector<int> blockIndexOfPoint_;  // owned -> index in blocks_
   bool planar_ = false;                 // a 2D discretization: points in z = 0, no z motion
   double dt_ = 0, stableDt_ = 0, time_ = 0;
+  double peridigmDt_ = 0;          // Peridigm's estimate (stableDt_ unless "Verlet Limit")
+  int verletLimitIterations_ = 0;  // Lanczos iterations of the "Verlet Limit" estimate
   long long numSteps_ = 0;
   std::function<void(long long, double)> observer_;
   std::unique_ptr<Checkpoint> checkpoint_;  // with Restart

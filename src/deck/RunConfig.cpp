@@ -113,6 +113,14 @@ SolverConfig readSolver(ListReader s) {
     sc.fixedDt = v.positiveNumber("Fixed dt");
   }
   sc.safetyFactor = v.positiveNumber("Safety Factor", 1.0);
+  if (v.has("Stable Time Step Estimate")) {
+    const std::string estimate = v.string("Stable Time Step Estimate");
+    if (estimate != "Peridigm" && estimate != "Verlet Limit") {
+      throw InputError(v.pathOf("Stable Time Step Estimate"),
+                       "expected \"Peridigm\" or \"Verlet Limit\", got \"" + estimate + "\"");
+    }
+    sc.verletLimitEstimate = estimate == "Verlet Limit";
+  }
   v.boolean("Verbose", false);
   v.finish();
   s.finish();

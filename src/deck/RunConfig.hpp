@@ -47,6 +47,9 @@ struct SolverConfig {
   double initialTime = 0.0, finalTime = 1.0;
   bool fixedDtGiven = false;
   double fixedDt = 0.0, safetyFactor = 1.0;
+  // Verlet -> Stable Time Step Estimate: Peridigm's row-sum bound (default) or the Lanczos
+  // estimate of the true Verlet limit (solvers/VerletLimit.hpp).
+  bool verletLimitEstimate = false;
 };
 
 struct OutputConfig {

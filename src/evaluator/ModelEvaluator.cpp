@@ -168,13 +168,13 @@ void ModelEvaluator::initialize() {
   syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
 }
 
-void ModelEvaluator::evaluate(double dt) {
+void ModelEvaluator::evaluate(double dt, bool updateDamage) {
   state_.dt = dt;
   {
     Timers::Scope t(timers_, "Ghost exchange");
     fields_.refreshGhosts("Coordinates");
   }
-  if (bondDamage_) {
+  if (bondDamage_ && updateDamage) {
     Timers::Scope t(timers_, "Damage");
     for (auto& b : blocks_)
       if (b.damage && !fusesCriticalStretch(b))
@@ -194,7 +194,7 @@ void ModelEvaluator::evaluate(double dt) {
   Timers::Scope t(timers_, "Force");
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
-    const bool fused = fusesCriticalStretch(b);
+    const bool fused = updateDamage && fusesCriticalStretch(b);
     state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
     state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
     b.material->computeForce(state_, b.points);

@@ -27,13 +27,17 @@ class ModelEvaluator {
   void setFuseCriticalStretch(bool fuse) { fuseCriticalStretch_ = fuse; }
   // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
   // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
-  void setPartialVolumes(bool partial) { partialVolumes_ = partial; }
+  void setPartialVolumes(bool partial) {
+    partialVolumes_ = partial;
+    state_.partialVolumes = partial;
+  }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();
   // Computes the internal force density of all owned points from the current coordinates
-  // (owned values; ghosts are refreshed here).
-  void evaluate(double dt);
+  // (owned values; ghosts are refreshed here). With `updateDamage` false no bond breaks (the
+  // linearized stiffness is probed this way).
+  void evaluate(double dt, bool updateDamage = true);
 
   const ModelState& state() const { return state_; }
   // Fraction of broken bonds per owned point (0 where no damage model or no bonds).

@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "core/Error.hpp"
+#include "neighbor/PartialVolume.hpp"
 
 namespace peridot {
 
@@ -123,13 +124,26 @@ void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& po
   const bool planar = s.dimension == 2;
   const double kappa =
       planar ? inPlaneBulkModulus(youngsModulus(), poissonsRatio(), planeMode()) : 0.0;
+  // With partial volumes each neighbour counts with the fraction of its cell inside the
+  // horizon, as in the models' sums (Peridigm's estimate has no such fraction to ignore).
+  CellFractionCache fractions;
   for (int i : points) {
     const double d = s.horizon[i];
     const double c = planar ? 12.0 * kappa / (pi * s.thickness * d * d * d)
                             : 18.0 * bulkModulus() / (pi * d * d * d * d);
     double total = 0;
-    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
-      if (s.topology->ownSide(b)) total += s.volume[s.topology->neighbors[b]] * c / s.bondLength[b];
+    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
+      if (!s.topology->ownSide(b)) continue;
+      const int j = s.topology->neighbors[b];
+      double k = s.volume[j] * c / s.bondLength[b];
+      if (s.partialVolumes) {
+        double xi[3];
+        for (int e = 0; e < 3; ++e) xi[e] = s.x[3 * j + e] - s.x[3 * i + e];
+        k *=
+            fractions.fraction(xi, cellEdge(s.volume[j], s.dimension, s.thickness), d, s.dimension);
+      }
+      total += k;
+    }
     sum[i] = total;
   }
 }

@@ -41,6 +41,9 @@ struct ModelState {
   BondLaw bondLaw;
   // The deck's influence function ("One", "Conical", ...); `influence` holds its values.
   std::string influenceFunction = "One";
+  // Partial-volume quadrature: `influence` includes each bond's cell fraction (see
+  // evaluator/ModelEvaluator.hpp).
+  bool partialVolumes = false;
 };
 
 // How a material reads its elastic constants: in 3D, or in plane stress / plane strain.

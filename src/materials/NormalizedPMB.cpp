@@ -63,7 +63,8 @@ void NormalizedPMB::stiffnessSum(const ModelState& s, const std::vector<int>& po
 PERIDOT_REGISTER_MATERIAL(
     "Normalized PMB", NormalizedPMB,
     "PMB with the micromodulus normalized by each point's discrete neighbourhood volume "
-    "(Ganzenmueller et al.): exact energy of homogeneous dilatation at every point",
+    "(Ganzenmueller et al.): exact total energy of a homogeneous dilatation (pointwise only "
+    "where neighbourhood volumes are equal)",
     (std::vector<ParameterDoc>{
         {"Density", "positive number, required: mass density"},
         {"Bulk Modulus",
