@@ -58,7 +58,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   int defaultGroup = -1;
   for (std::size_t g = 0; g < config_.blocks.size(); ++g) {
     for (const auto& name : config_.blocks[g].blockNames) {
-      if (name == "Default") {
+      if (name == "Default" || name == "default") {  // Peridigm accepts both spellings
+        if (defaultGroup >= 0 && defaultGroup != static_cast<int>(g)) {
+          throw InputError(config_.blocks[g].path + " -> Block Names",
+                           "\"" + name + "\" is already used by " +
+                               config_.blocks[static_cast<std::size_t>(defaultGroup)].path +
+                               "; only one block group may take the remaining blocks");
+        }
         defaultGroup = static_cast<int>(g);
         continue;
       }
