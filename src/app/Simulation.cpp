@@ -327,7 +327,8 @@ void Simulation::checkDimension() {
   }
   const char* modeName[3] = {"3D", "plane stress", "plane strain"};
   for (const auto& g : config_.blocks) {
-    const PlaneMode mode = config_.materials.at(g.material)->planeMode();
+    const auto& material = config_.materials.at(g.material);
+    const PlaneMode mode = material->planeMode();
     if (planar_ && mode == PlaneMode::ThreeD) {
       throw InputError(g.path + " -> Material",
                        "material \"" + g.material +
@@ -335,7 +336,7 @@ void Simulation::checkDimension() {
                            "\"Plane Strain: true\" in Materials -> " +
                            g.material);
     }
-    if (!planar_ && mode != PlaneMode::ThreeD) {
+    if (!planar_ && mode != PlaneMode::ThreeD && !material->acceptsPlaneModeIn3D()) {
       throw InputError(g.path + " -> Material",
                        "material \"" + g.material + "\" is " + modeName[static_cast<int>(mode)] +
                            " but the discretization is 3D; use a 2D discretization "

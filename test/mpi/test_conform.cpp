@@ -1,0 +1,149 @@
+// Peridigm deck forms (issue 12) run through the Simulation on 1, 2 and 3 ranks, each checked
+// against an independent result.
+#include <gtest/gtest.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../common/TestExodusMesh.hpp"
+#include "app/RunVariables.hpp"
+#include "app/Simulation.hpp"
+#include "core/Error.hpp"
+#include "deck/Deck.hpp"
+
+namespace peridot {
+namespace {
+
+using testing::addNode;
+using testing::TestBlock;
+using testing::TestMesh;
+
+std::ostringstream quiet;
+
+// A mesh file every rank sees: rank 0 writes it, everyone removes nothing until the end.
+struct MeshFile {
+  explicit MeshFile(const TestMesh& mesh) {
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    path = (std::filesystem::temp_directory_path() /
+            ("peridot_conform_" + std::to_string(::getpid()) + ".g"))
+               .string();
+    int length = static_cast<int>(path.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    path.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(path.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+    if (rank == 0) testing::writeMesh(path, mesh);
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+  ~MeshFile() {
+    MPI_Barrier(MPI_COMM_WORLD);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    std::error_code ec;
+    if (rank == 0) std::filesystem::remove(path, ec);
+  }
+  std::string path;
+};
+
+// One layer of nx x ny HEX8 elements of size a x a x h (z in [-h/2, h/2]): Peridigm's way of
+// writing a 2D model.
+TestMesh oneLayer(int nx, int ny, double a, double h) {
+  TestMesh mesh;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) addNode(mesh, a * i, a * j, h * (k - 0.5));
+  const auto node = [&](int i, int j, int k) { return 1 + i + (nx + 1) * (j + (ny + 1) * k); };
+  TestBlock block;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        for (const auto& c :
+             {std::pair{i, j}, std::pair{i + 1, j}, std::pair{i + 1, j + 1}, std::pair{i, j + 1}}) {
+          block.connectivity.push_back(node(c.first, c.second, k));
+        }
+      }
+    }
+  }
+  mesh.blocks = {block};
+  return mesh;
+}
+
+std::vector<double> runAndGet(const std::string& deck, const std::string& variable) {
+  Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+  sim.run();
+  std::vector<double> values;
+  sim.variables().nodeVariable(variable, values);
+  return values;
+}
+
+std::string bondBasedDeck(const std::string& mesh, const std::string& material) {
+  return "Peridigm:\n"
+         "  Discretization:\n    Type: Exodus\n    Input Mesh File: \"" +
+         mesh +
+         "\"\n"
+         "  Materials:\n    M:\n      Material Model: Elastic Bond Based\n      Density: 7800.0\n" +
+         material +
+         "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 0.751\n"
+         "  Boundary Conditions:\n    All Node Set: \"1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 "
+         "21 22 23 24\"\n"
+         "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n      Coordinate: y\n"
+         "      Value: \"1.0e3*y*y + 2.0e2*x\"\n"
+         "  Solver:\n    Final Time: 2.0e-7\n    Verlet:\n      Fixed dt: 2.0e-8\n";
+}
+
+// Peridigm's 2D bond-based form: plane stress on a one-layer HEX8 mesh, 3D points and bonds,
+// micromodulus 12 K / (pi h delta^3). The same run in 3D with the bulk modulus whose 3D
+// micromodulus 18 K3 / (pi delta^4) is that value (K3 = 2 K delta / (3 h)) is the gold.
+TEST(Conform, BondBasedPlaneStressOnOneLayerOfHexes) {
+  const double K = 200.0e9, h = 0.25, delta = 0.751;
+  MeshFile mesh(oneLayer(6, 4, 0.25, h));
+  std::ostringstream planar, solid, young;
+  planar.precision(17);
+  solid.precision(17);
+  planar << "      Bulk Modulus: " << K << "\n      Plane Stress: true\n      Height: " << h
+         << "\n";
+  solid << "      Bulk Modulus: " << 2.0 * K * delta / (3.0 * h) << "\n";
+  // Young's modulus in plane stress: nu = 1/3, K = E.
+  young << "      Young's Modulus: " << K << "\n      Plane Stress: true\n      Height: " << h
+        << "\n";
+  for (const char* variable : {"Displacement", "Force_Density"}) {
+    const auto a = runAndGet(bondBasedDeck(mesh.path, planar.str()), variable);
+    const auto b = runAndGet(bondBasedDeck(mesh.path, solid.str()), variable);
+    const auto c = runAndGet(bondBasedDeck(mesh.path, young.str()), variable);
+    ASSERT_EQ(a.size(), b.size());
+    double scale = 0;
+    for (double v : b) scale = std::max(scale, std::fabs(v));
+    ASSERT_GT(scale, 0.0);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_NEAR(a[i], b[i], 1e-12 * scale) << variable << " " << i;
+      EXPECT_EQ(a[i], c[i]) << variable << " " << i;
+    }
+  }
+  // Plane strain is the same constant for a given K (only E -> K differs: nu = 1/4).
+  std::ostringstream strain;
+  strain.precision(17);
+  strain << "      Bulk Modulus: " << K << "\n      Plane Strain: true\n      Height: " << h
+         << "\n";
+  EXPECT_EQ(runAndGet(bondBasedDeck(mesh.path, strain.str()), "Displacement"),
+            runAndGet(bondBasedDeck(mesh.path, planar.str()), "Displacement"));
+}
+
+TEST(Conform, BondBasedPlaneModeOnSolidMeshNeedsHeight) {
+  MeshFile mesh(oneLayer(6, 4, 0.25, 0.25));
+  const std::string deck =
+      bondBasedDeck(mesh.path, "      Bulk Modulus: 1.0e9\n      Plane Strain: true\n");
+  try {
+    runAndGet(deck, "Displacement");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Height"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace peridot
