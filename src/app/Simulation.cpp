@@ -145,10 +145,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
-  if (topology_.globalNumBonds == 0) {
+  // Without bonds the points interact only through contact: a valid Peridigm deck (contact-only
+  // runs use a horizon below the spacing). Without contact nothing would interact at all.
+  if (topology_.globalNumBonds == 0 && !config_.contact.enabled) {
     throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
                                    formatNumber(horizonRange[0]) +
-                                   ") is smaller than the point spacing");
+                                   ") is smaller than the point spacing, and there is no "
+                                   "Contact section through which the points could interact");
   }
   nodeSetIds_ = collectNodeSets(topology_, config_.nodeSets);
   {
@@ -160,7 +163,9 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     if (total > 0) {
       std::ostringstream msg;
       msg << "peridot: warning: " << lonely.size() << " point(s) on rank " << rank_
-          << " have no neighbour (they move freely); ids:";
+          << " have no neighbour ("
+          << (config_.contact.enabled ? "only contact acts on them" : "they move freely")
+          << "); ids:";
       for (std::size_t k = 0; k < lonely.size() && k < 10; ++k) msg << " " << lonely[k];
       if (lonely.size() > 10) msg << " ...";
       if (!lonely.empty()) std::cerr << msg.str() << std::endl;
@@ -296,6 +301,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     stableDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
   }
   const auto& s = config_.solver;
+  if (!s.fixedDtGiven && !(stableDt_ < std::numeric_limits<double>::max())) {
+    // The estimate sums bond stiffnesses; contact springs depend on where bodies meet and are
+    // not in it (nor in Peridigm's), so a run without bonds has no estimate.
+    throw InputError(s.path + " -> Verlet -> Fixed dt",
+                     "required: no point has a bond (the horizon is smaller than the spacing, all "
+                     "interaction is through contact), so there is no stable time step estimate");
+  }
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them

@@ -89,7 +89,8 @@ std::string bondBasedDeck(const std::string& mesh, const std::string& material) 
          "  Materials:\n    M:\n      Material Model: Elastic Bond Based\n      Density: 7800.0\n" +
          material +
          "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 0.751\n"
-         "  Boundary Conditions:\n    All Node Set: \"1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 "
+         "  Boundary Conditions:\n    All Node Set: \"1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 "
+         "19 20 "
          "21 22 23 24\"\n"
          "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n      Coordinate: y\n"
          "      Value: \"1.0e3*y*y + 2.0e2*x\"\n"
@@ -142,6 +143,87 @@ TEST(Conform, BondBasedPlaneModeOnSolidMeshNeedsHeight) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("Height"), std::string::npos) << e.what();
+  }
+}
+
+// Contact only: pairs of points far apart compared with the horizon (no bonds at all) meet
+// head-on through the short-range contact force. Equal masses and a frictionless linear spring:
+// an elastic collision, after which the two velocities are exchanged (the gold).
+TestMesh collidingPairs(int pairs) {
+  TestMesh mesh;
+  TestBlock left, right;
+  for (TestBlock* b : {&left, &right}) {
+    b->type = "SPHERE";
+    b->nodesPerElement = 1;
+    b->numAttributes = 2;
+  }
+  left.id = 1;
+  right.id = 2;
+  for (int p = 0; p < pairs; ++p) {
+    addNode(mesh, 0.0, 10.0 * p, 0.0);
+    addNode(mesh, 1.5, 10.0 * p, 0.0);
+    left.connectivity.push_back(2 * p + 1);
+    right.connectivity.push_back(2 * p + 2);
+    for (TestBlock* b : {&left, &right}) b->attributes.insert(b->attributes.end(), {0.6, 1.0});
+  }
+  mesh.blocks = {left, right};
+  return mesh;
+}
+
+std::string contactDeck(const std::string& mesh, const std::string& verlet) {
+  return "Peridigm:\n"
+         "  Discretization:\n    Type: Exodus\n    Input Mesh File: \"" +
+         mesh +
+         "\"\n"
+         "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 1.0\n"
+         "      Bulk Modulus: 1.0e3\n      Shear Modulus: 1.0e3\n"
+         "  Blocks:\n    B:\n      Block Names: default\n      Material: M\n      Horizon: 0.5\n"
+         "  Contact:\n    Search Radius: 2.0\n    Search Frequency: 1\n"
+         "    Models:\n      C:\n        Contact Model: Short Range Force\n"
+         "        Contact Radius: 1.0\n        Spring Constant: 1.0e3\n"
+         "    Interactions:\n      General Contact:\n        Contact Model: C\n"
+         "  Boundary Conditions:\n"
+         "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n      Coordinate: x\n"
+         "      Value: \"1.0 - 2.0*(x > 1)\"\n"
+         "    All Node Set: \"1 2 3 4 5 6\"\n"
+         "  Solver:\n    Final Time: 0.5\n    Verlet:\n" +
+         verlet;
+}
+
+TEST(Conform, ContactOnlyDeckRunsAndCollisionsAreElastic) {
+  MeshFile mesh(collidingPairs(3));
+  Simulation sim(
+      readRunConfig(*parseDeck(contactDeck(mesh.path, "      Fixed dt: 2.0e-5\n"), "yaml")),
+      MPI_COMM_WORLD, quiet);
+  sim.run();
+  std::vector<double> v, x;
+  sim.variables().nodeVariable("Velocity", v);
+  sim.variables().nodeVariable("Model_Coordinates", x);
+  ASSERT_EQ(v.size(), x.size());
+  int touched = 0;
+  for (std::size_t p = 0; 3 * p < v.size(); ++p) {
+    // The left point (x = 0) left with +1 and comes back with -1, the right one the reverse.
+    const double expected = x[3 * p] < 1.0 ? -1.0 : 1.0;
+    EXPECT_NEAR(v[3 * p], expected, 1e-3) << "point at x = " << x[3 * p];
+    EXPECT_NEAR(v[3 * p + 1], 0.0, 1e-12);
+    EXPECT_NEAR(v[3 * p + 2], 0.0, 1e-12);
+    ++touched;
+  }
+  int total = 0;
+  MPI_Allreduce(&touched, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, 6);
+}
+
+TEST(Conform, ContactOnlyDeckWithoutFixedDtSaysWhy) {
+  MeshFile mesh(collidingPairs(3));
+  try {
+    Simulation sim(
+        readRunConfig(*parseDeck(contactDeck(mesh.path, "      Safety Factor: 0.5\n"), "yaml")),
+        MPI_COMM_WORLD, quiet);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Fixed dt"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("contact"), std::string::npos) << e.what();
   }
 }
 
