@@ -383,7 +383,9 @@ void Simulation::checkVariables() {
     for (const auto& v : out.variables) check(v, out.path + " -> Output Variables -> " + v);
   for (const auto& c : config_.computes) {
     check(c.variable, c.path + " -> Variable");
-    if (c.computeClass == "Block_Data") {
+    if (c.computeClass == "Nearest_Point_Data") {
+      continue;
+    } else if (c.computeClass == "Block_Data") {
       bool found = false;
       for (const auto& b : blocks_) found = found || b.name == c.region;
       if (!found) throw InputError(c.path + " -> Block", "unknown block \"" + c.region + "\"");

@@ -152,9 +152,16 @@ ComputeConfig readCompute(ListReader c, const std::string& name) {
   ComputeConfig cc;
   cc.name = name;
   cc.path = c.path();
-  cc.computeClass = c.choice("Compute Class", {"Block_Data", "Node_Set_Data"});
-  cc.calculation = c.choice("Calculation Type", {"Sum", "Minimum", "Maximum"});
-  cc.region = c.string(cc.computeClass == "Block_Data" ? "Block" : "Node Set");
+  cc.computeClass =
+      c.choice("Compute Class", {"Block_Data", "Node_Set_Data", "Nearest_Point_Data"});
+  if (cc.computeClass == "Nearest_Point_Data") {
+    // The point nearest (X, Y, Z) in the reference configuration, ties to the smallest id.
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (int d = 0; d < 3; ++d) cc.point[d] = c.number(axes[d]);
+  } else {
+    cc.calculation = c.choice("Calculation Type", {"Sum", "Minimum", "Maximum"});
+    cc.region = c.string(cc.computeClass == "Block_Data" ? "Block" : "Node Set");
+  }
   cc.variable = c.string("Variable");
   cc.label = c.string("Output Label");
   if (cc.label.empty()) throw InputError(c.pathOf("Output Label"), "the label is empty");
@@ -182,6 +189,7 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Proc_Num", 1, "MPI rank owning the point"},
       {"Horizon", 1, "horizon of the point"},
       {"Number_Of_Neighbors", 1, "bonds of the point (at the start)"},
+      {"Radius", 1, "radius of the sphere of the point's volume, (3V/(4 pi))^(1/3)"},
       {"Model_Coordinates", 3, "reference coordinates"},
       {"Coordinates", 3, "current coordinates"},
       {"Displacement", 3, "displacement"},

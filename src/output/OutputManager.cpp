@@ -68,7 +68,8 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
       } else if (c == 1) {
         f.header.elementNames.push_back(v);
       } else if (source.globalSize(v) == 3) {
-        for (int d = 0; d < dimension_; ++d) f.header.globalNames.push_back(v + axes[d]);
+        for (int d = 0; d < dimension_; ++d)
+          f.header.globalNames.push_back(source.globalComponentName(v, d));
       } else {
         f.header.globalNames.push_back(v);
       }

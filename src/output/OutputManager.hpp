@@ -26,6 +26,10 @@ class VariableSource {
   virtual int components(const std::string& name) const = 0;  // 0 = global
   // Values of a global variable (1, or 3 for a vector); not collective.
   virtual int globalSize(const std::string& name) const = 0;
+  // The file's name of component d of a vector global variable.
+  virtual std::string globalComponentName(const std::string& name, int d) const {
+    return name + std::string(1, "XYZ"[d]);
+  }
 };
 
 class OutputManager {

@@ -227,5 +227,57 @@ TEST(Conform, ContactOnlyDeckWithoutFixedDtSaysWhy) {
   }
 }
 
+// Nearest_Point_Data and Radius on a 4x4x4 grid of unit cells with v_y = x + 10 z: the tracked
+// point's value is the expression at the nearest cell centre (by hand), a tie between two
+// centres goes to the smaller id, and a vector comes out as <label>_X/_Y/_Z.
+TEST(Conform, NearestPointDataAndRadius) {
+  std::string all;
+  for (int i = 1; i <= 64; ++i) all += std::to_string(i) + " ";
+  const std::string deck =
+      "Peridigm:\n"
+      "  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
+      "    TensorProduct3DMeshGenerator:\n"
+      "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
+      "      X Length: 4.0\n      Y Length: 4.0\n      Z Length: 4.0\n"
+      "      Number Points X: 4\n      Number Points Y: 4\n      Number Points Z: 4\n"
+      "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 2.0\n"
+      "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n"
+      "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.1\n"
+      "  Boundary Conditions:\n    All Node Set: \"" +
+      all +
+      "\"\n"
+      "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n"
+      "      Coordinate: y\n      Value: \"x + 10*z\"\n"
+      "  Compute Class Parameters:\n"
+      "    Gauge:\n      Compute Class: Nearest_Point_Data\n      X: 2.4\n      Y: 0.1\n"
+      "      Z: 3.3\n      Variable: Velocity\n      Output Label: Gauge_Velocity\n"
+      "    Tie:\n      Compute Class: Nearest_Point_Data\n      X: 1.0\n      Y: 0.5\n"
+      "      Z: 0.5\n      Variable: Velocity\n      Output Label: Tie_Velocity\n"
+      "      Verbose: false\n"
+      "    Size:\n      Compute Class: Nearest_Point_Data\n      X: 0.0\n      Y: 0.0\n"
+      "      Z: 0.0\n      Variable: Radius\n      Output Label: Corner_Radius\n"
+      "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n";
+  Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+  std::vector<double> g;
+  // Nearest centre to (2.4, 0.1, 3.3) is (2.5, 0.5, 3.5): v_y = 2.5 + 35.
+  sim.variables().globalVariable("Gauge_Velocity", g);
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_EQ(g[0], 0.0);
+  EXPECT_EQ(g[1], 37.5);
+  EXPECT_EQ(g[2], 0.0);
+  // (1.0, 0.5, 0.5) is as far from (0.5, 0.5, 0.5) (id 1) as from (1.5, 0.5, 0.5) (id 2).
+  sim.variables().globalVariable("Tie_Velocity", g);
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_EQ(g[1], 5.5);
+  const double radius = std::cbrt(3.0 / (4.0 * std::acos(-1.0)));  // unit volume
+  sim.variables().globalVariable("Corner_Radius", g);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_NEAR(g[0], radius, 1e-15);
+  std::vector<double> r;
+  sim.variables().nodeVariable("Radius", r);
+  for (double v : r) EXPECT_NEAR(v, radius, 1e-15);
+  EXPECT_EQ(sim.variables().globalComponentName("Gauge_Velocity", 1), "Gauge_Velocity_Y");
+}
+
 }  // namespace
 }  // namespace peridot
