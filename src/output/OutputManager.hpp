@@ -66,6 +66,9 @@ class OutputManager {
     std::vector<Trigger> triggers;
     ExodusHeader header;
     std::unique_ptr<ExodusWriter> writer;  // rank 0
+    // Global variables only (a `.h` file): Peridigm's placeholder mesh of one node and one
+    // element instead of the points.
+    bool onlyGlobal = false;
   };
   bool fires(const File& f, long long step) const;
   // Collective: creates the files (or continues them: `resumeTime` set, `messages` filled).

@@ -15,6 +15,7 @@
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
+#include "output/ExodusCompare.hpp"
 
 namespace peridot {
 namespace {
@@ -277,6 +278,62 @@ TEST(Conform, NearestPointDataAndRadius) {
   sim.variables().nodeVariable("Radius", r);
   for (double v : r) EXPECT_NEAR(v, radius, 1e-15);
   EXPECT_EQ(sim.variables().globalComponentName("Gauge_Velocity", 1), "Gauge_Velocity_Y");
+}
+
+// A stream of global variables only is a `.h` file on Peridigm's placeholder mesh: one node at
+// the origin, one element in block 1, no node sets. Its kinetic energy by hand: 64 unit cells,
+// density 2, v_y = 2: 64 x 1/2 x 2 x 4 = 256.
+TEST(Conform, GlobalsOnlyStreamHasPeridigmsPlaceholderMesh) {
+  std::string base = (std::filesystem::temp_directory_path() /
+                      ("peridot_conform_hist_" + std::to_string(::getpid())))
+                         .string();
+  int length = static_cast<int>(base.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  base.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(base.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::string all;
+  for (int i = 1; i <= 64; ++i) all += std::to_string(i) + " ";
+  const std::string deck =
+      "Peridigm:\n"
+      "  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
+      "    TensorProduct3DMeshGenerator:\n"
+      "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
+      "      X Length: 4.0\n      Y Length: 4.0\n      Z Length: 4.0\n"
+      "      Number Points X: 4\n      Number Points Y: 4\n      Number Points Z: 4\n"
+      "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 2.0\n"
+      "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n"
+      "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.1\n"
+      "  Boundary Conditions:\n    All Node Set: \"" +
+      all +
+      "\"\n"
+      "    V:\n      Type: Initial Velocity\n      Node Set: All Node Set\n"
+      "      Coordinate: y\n      Value: \"2.0\"\n"
+      "  Solver:\n    Final Time: 1.0\n    Verlet:\n      Fixed dt: 0.5\n"
+      "  Output:\n    Output File Type: ExodusII\n    Output Filename: \"" +
+      base +
+      "\"\n    Output Frequency: 1\n"
+      "    Output Variables:\n      Global_Kinetic_Energy: true\n";
+  {
+    Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+    sim.run();
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) {
+    const auto h = readExodusResults(base + ".h");
+    EXPECT_EQ(h.nodeIds, (std::vector<long long>{1}));
+    EXPECT_EQ(h.nodeCoordinates, (std::vector<double>{0.0, 0.0, 0.0}));
+    EXPECT_EQ(h.elementIds, (std::vector<long long>{1}));
+    EXPECT_EQ(h.elementBlock, (std::vector<long long>{1}));
+    EXPECT_TRUE(h.nodalNames.empty());
+    EXPECT_TRUE(h.elementNames.empty());
+    ASSERT_EQ(h.globalNames, (std::vector<std::string>{"Global_Kinetic_Energy"}));
+    ASSERT_EQ(h.times.size(), 3u);
+    EXPECT_EQ(h.global[0][0][0], 256.0);
+    std::filesystem::remove(base + ".h");
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
 }
 
 }  // namespace
