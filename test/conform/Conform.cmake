@@ -18,3 +18,5 @@ endfunction()
 # A group named default / Default takes the blocks no other group names.
 peridot_conform_pair(default_block DefaultBlock default.yaml named.yaml out.e exact.comp)
 peridot_conform_pair(Default_block DefaultBlock capitalised.yaml named.yaml out.e exact.comp)
+# An XML parameter repeated with the same value runs (with a warning) as if given once.
+peridot_conform_pair(repeated_key RepeatedKey repeated.xml single.xml out.e exact.comp)
