@@ -149,7 +149,7 @@ TEST(ElementGeometry, FrustumHexVolumeAndCentroid) {
   EXPECT_NEAR(centroid[0], 1.0, 1e-14);
   EXPECT_NEAR(centroid[1], 1.0, 1e-14);
   EXPECT_NEAR(centroid[2], 11.0 / 28.0, 1e-14);
-  peridot::hexNodeAverage(nodes, average);  // what the reader (and Peridigm) use
+  peridot::hexNodeAverage(nodes, average);  // not the point: see hexTetCentroid
   EXPECT_DOUBLE_EQ(average[0], 1.0);
   EXPECT_DOUBLE_EQ(average[1], 1.0);
   EXPECT_DOUBLE_EQ(average[2], 0.5);
