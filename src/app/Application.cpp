@@ -53,7 +53,10 @@ bool describe(const std::string& name, const char* kind) {
 }
 
 int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
-  auto deck = loadDeck(deckFile);
+  std::vector<std::string> warnings;
+  auto deck = loadDeck(deckFile, &warnings);
+  if (rank == 0)
+    for (const auto& w : warnings) std::cerr << "peridot: warning: " << w << std::endl;
   RunConfig config = readRunConfig(*deck);
   if (rank == 0) std::cout << "Peridot " << PERIDOT_VERSION << ": " << deckFile << std::endl;
   Simulation simulation(std::move(config), MPI_COMM_WORLD, std::cout);

@@ -1,6 +1,7 @@
 #include "app/RunVariables.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -29,6 +30,14 @@ int RunVariables::globalSize(const std::string& name) const {
   return 1;
 }
 
+std::string RunVariables::globalComponentName(const std::string& name, int d) const {
+  // Peridigm names Nearest_Point_Data's vector components <label>_X, _Y, _Z.
+  for (const auto& c : s_.config->computes)
+    if (c.label == name && c.computeClass == "Nearest_Point_Data")
+      return name + "_" + std::string(1, "XYZ"[d]);
+  return VariableSource::globalComponentName(name, d);
+}
+
 void RunVariables::nodeVariable(const std::string& name, std::vector<double>& out) {
   const int n = s_.topology->numOwned;
   const int c = components(name);
@@ -46,6 +55,10 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     for (int i = 0; i < n; ++i) out[i] = static_cast<double>(s_.topology->overlapGlobalId[i] + 1);
   } else if (name == "Proc_Num") {
     for (int i = 0; i < n; ++i) out[i] = s_.rank;
+  } else if (name == "Radius") {
+    // Peridigm's Radius compute: the sphere of the point's volume, in its arithmetic.
+    const double constant = 0.75 / std::acos(-1.0), oneThird = 1.0 / 3.0;
+    for (int i = 0; i < n; ++i) out[i] = std::pow(constant * volume_[i], oneThird);
   } else if (name == "Number_Of_Neighbors") {
     for (int i = 0; i < n; ++i) {
       int count = 0;
@@ -121,6 +134,33 @@ double RunVariables::reduce(const std::vector<int>* points, const std::string& v
   return global;
 }
 
+int RunVariables::nearestPoint(const ComputeConfig& c) {
+  const auto found = nearest_.find(c.label);
+  if (found != nearest_.end()) return found->second;
+  // Smallest squared distance over all ranks, then the smallest global id at that distance.
+  double best = std::numeric_limits<double>::max();
+  long long bestId = std::numeric_limits<long long>::max();
+  int bestIndex = -1;
+  for (int i = 0; i < s_.topology->numOwned; ++i) {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += (x_[3 * i + k] - c.point[k]) * (x_[3 * i + k] - c.point[k]);
+    const long long id = s_.topology->overlapGlobalId[i];
+    if (d2 < best || (d2 == best && id < bestId)) {
+      best = d2;
+      bestId = id;
+      bestIndex = i;
+    }
+  }
+  double globalBest = best;
+  MPI_Allreduce(&best, &globalBest, 1, MPI_DOUBLE, MPI_MIN, s_.comm);
+  long long candidate = best == globalBest ? bestId : std::numeric_limits<long long>::max();
+  long long chosen = candidate;
+  MPI_Allreduce(&candidate, &chosen, 1, MPI_LONG_LONG, MPI_MIN, s_.comm);
+  const int index = candidate == chosen && bestIndex >= 0 ? bestIndex : -1;
+  nearest_[c.label] = index;
+  return index;
+}
+
 void RunVariables::globalVariable(const std::string& name, std::vector<double>& values) {
   values.clear();
   if (name == "Global_Kinetic_Energy") {
@@ -133,6 +173,19 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
   }
   for (const auto& c : s_.config->computes) {
     if (c.label != name) continue;
+    const int n = components(c.variable);
+    if (c.computeClass == "Nearest_Point_Data") {
+      // The owner contributes the value, the others zeros: the sum is the value, exactly.
+      const int p = nearestPoint(c);
+      std::vector<double> mine(static_cast<std::size_t>(n), 0.0), all;
+      if (p >= 0) {
+        nodeVariable(c.variable, all);
+        for (int d = 0; d < n; ++d) mine[d] = all[static_cast<std::size_t>(p) * n + d];
+      }
+      values.assign(static_cast<std::size_t>(n), 0.0);
+      MPI_Allreduce(mine.data(), values.data(), n, MPI_DOUBLE, MPI_SUM, s_.comm);
+      return;
+    }
     const std::vector<int>* points = nullptr;
     if (c.computeClass == "Block_Data") {
       for (const auto& b : *s_.blocks)
@@ -140,7 +193,6 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
     } else {
       points = &s_.nodeSets->at(c.region);
     }
-    const int n = components(c.variable);
     for (int d = 0; d < n; ++d) values.push_back(reduce(points, c.variable, d, c.calculation));
     return;
   }

@@ -39,12 +39,18 @@ class RunVariables : public VariableSource {
   void globalVariable(const std::string& name, std::vector<double>& values) override;
   int components(const std::string& name) const override;
   int globalSize(const std::string& name) const override;
+  std::string globalComponentName(const std::string& name, int d) const override;
 
  private:
   // Collective: the calculation ("Sum", "Minimum", "Maximum") of one component of a node
   // variable over `points` (all owned points when null), over all ranks.
   double reduce(const std::vector<int>* points, const std::string& variable, int component,
                 const std::string& calculation);
+
+  // Nearest_Point_Data: the owned index of the tracked point on its owner, -1 elsewhere; found
+  // on first use (collective) and kept, as the reference positions never change.
+  int nearestPoint(const ComputeConfig& c);
+  std::map<std::string, int> nearest_;
 
   Sources s_;
   const double *x_, *y_, *u_, *v_, *a_, *f_, *volume_;

@@ -57,7 +57,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   int defaultGroup = -1;
   for (std::size_t g = 0; g < config_.blocks.size(); ++g) {
     for (const auto& name : config_.blocks[g].blockNames) {
-      if (name == "Default") {
+      if (name == "Default" || name == "default") {  // Peridigm accepts both spellings
+        if (defaultGroup >= 0 && defaultGroup != static_cast<int>(g)) {
+          throw InputError(config_.blocks[g].path + " -> Block Names",
+                           "\"" + name + "\" is already used by " +
+                               config_.blocks[static_cast<std::size_t>(defaultGroup)].path +
+                               "; only one block group may take the remaining blocks");
+        }
         defaultGroup = static_cast<int>(g);
         continue;
       }
@@ -138,10 +144,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
-  if (topology_.globalNumBonds == 0) {
+  // Without bonds the points interact only through contact: a valid Peridigm deck (contact-only
+  // runs use a horizon below the spacing). Without contact nothing would interact at all.
+  if (topology_.globalNumBonds == 0 && !config_.contact.enabled) {
     throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
                                    formatNumber(horizonRange[0]) +
-                                   ") is smaller than the point spacing");
+                                   ") is smaller than the point spacing, and there is no "
+                                   "Contact section through which the points could interact");
   }
   nodeSetIds_ = collectNodeSets(topology_, config_.nodeSets);
   {
@@ -153,7 +162,9 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     if (total > 0) {
       std::ostringstream msg;
       msg << "peridot: warning: " << lonely.size() << " point(s) on rank " << rank_
-          << " have no neighbour (they move freely); ids:";
+          << " have no neighbour ("
+          << (config_.contact.enabled ? "only contact acts on them" : "they move freely")
+          << "); ids:";
       for (std::size_t k = 0; k < lonely.size() && k < 10; ++k) msg << " " << lonely[k];
       if (lonely.size() > 10) msg << " ...";
       if (!lonely.empty()) std::cerr << msg.str() << std::endl;
@@ -284,6 +295,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 
   estimateStableTimeStep();
   const auto& s = config_.solver;
+  if (!s.fixedDtGiven && !(stableDt_ < std::numeric_limits<double>::max())) {
+    // The estimate sums bond stiffnesses; contact springs depend on where bodies meet and are
+    // not in it (nor in Peridigm's), so a run without bonds has no estimate.
+    throw InputError(s.path + " -> Verlet -> Fixed dt",
+                     "required: no point has a bond (the horizon is smaller than the spacing, all "
+                     "interaction is through contact), so there is no stable time step estimate");
+  }
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
@@ -315,7 +333,8 @@ void Simulation::checkDimension() {
   }
   const char* modeName[3] = {"3D", "plane stress", "plane strain"};
   for (const auto& g : config_.blocks) {
-    const PlaneMode mode = config_.materials.at(g.material)->planeMode();
+    const auto& material = config_.materials.at(g.material);
+    const PlaneMode mode = material->planeMode();
     if (planar_ && mode == PlaneMode::ThreeD) {
       throw InputError(g.path + " -> Material",
                        "material \"" + g.material +
@@ -323,7 +342,7 @@ void Simulation::checkDimension() {
                            "\"Plane Strain: true\" in Materials -> " +
                            g.material);
     }
-    if (!planar_ && mode != PlaneMode::ThreeD) {
+    if (!planar_ && mode != PlaneMode::ThreeD && !material->acceptsPlaneModeIn3D()) {
       throw InputError(g.path + " -> Material",
                        "material \"" + g.material + "\" is " + modeName[static_cast<int>(mode)] +
                            " but the discretization is 3D; use a 2D discretization "
@@ -358,7 +377,9 @@ void Simulation::checkVariables() {
     for (const auto& v : out.variables) check(v, out.path + " -> Output Variables -> " + v);
   for (const auto& c : config_.computes) {
     check(c.variable, c.path + " -> Variable");
-    if (c.computeClass == "Block_Data") {
+    if (c.computeClass == "Nearest_Point_Data") {
+      continue;
+    } else if (c.computeClass == "Block_Data") {
       bool found = false;
       for (const auto& b : blocks_) found = found || b.name == c.region;
       if (!found) throw InputError(c.path + " -> Block", "unknown block \"" + c.region + "\"");

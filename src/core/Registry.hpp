@@ -10,6 +10,7 @@
 
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
+#include "deck/PeridigmVocabulary.hpp"
 
 namespace peridot {
 
@@ -60,8 +61,12 @@ const typename Registry<Base>::Entry& Registry<Base>::lookup(
   if (!entry) {
     std::string known;
     for (const auto& n : names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-    throw InputError(params.pathOf(kindKey),
-                     "unknown " + kind + " \"" + name + "\"; Peridot knows " + known);
+    const bool peridigms =
+        isIn(peridigmMaterialModels(), name) || isIn(peridigmDamageModels(), name);
+    throw InputError(params.pathOf(kindKey), (peridigms ? "the Peridigm " + kind + " \"" + name +
+                                                              "\" is not supported by Peridot yet"
+                                                        : "unknown " + kind + " \"" + name + "\"") +
+                                                 "; Peridot knows " + known);
   }
   // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
   for (const auto& key : params.keys()) {

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -52,18 +53,35 @@ bool parseInteger(const std::string& text, long long& value) {
 
 // Teuchos reads XML literals leniently ("78oo" as 78, "1.5" as an int 1) and lets a name appear
 // twice in a list; check the raw XML first so such decks fail with the deck path.
-void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path) {
-  std::set<std::string> names;
+void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path,
+                      std::vector<std::string>* warnings) {
+  // name -> "type=value" of a parameter ("" for a list), to tell a harmless repetition.
+  std::map<std::string, std::string> seen;
   for (int k = 0; k < list.numChildren(); ++k) {
     const Teuchos::XMLObject& child = list.getChild(k);
     if (child.getTag() != "Parameter" && child.getTag() != "ParameterList") continue;
     const std::string name = child.hasAttribute("name") ? child.getAttribute("name") : "";
     const std::string here = joinPath(path, name);
-    if (!names.insert(name).second) {
-      throw InputError(here, "appears twice in the same list");
+    std::string content;
+    if (child.getTag() == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value"))
+      content = child.getAttribute("type") + "=" + child.getAttribute("value");
+    const auto previous = seen.find(name);
+    if (previous != seen.end()) {
+      if (content.empty() || previous->second != content) {
+        throw InputError(here, "appears twice in the same list" +
+                                   std::string(content.empty() || previous->second.empty()
+                                                   ? ""
+                                                   : " with different values"));
+      }
+      if (warnings)
+        warnings->push_back(here +
+                            ": appears twice with the same value; the repetition is "
+                            "ignored (Peridigm keeps the last)");
+      continue;
     }
+    seen[name] = content;
     if (child.getTag() == "ParameterList") {
-      checkXmlLiterals(child, here);
+      checkXmlLiterals(child, here, warnings);
       continue;
     }
     if (!child.hasAttribute("type") || !child.hasAttribute("value")) continue;
@@ -116,7 +134,8 @@ std::string describeEntry(const Teuchos::ParameterEntry& e) {
   return s.str();
 }
 
-Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
+Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName,
+                                              std::vector<std::string>* warnings) {
   std::ifstream probe(fileName);
   if (!probe) throw InputError("cannot open deck file \"" + fileName + "\"");
   if (std::filesystem::is_directory(fileName)) {
@@ -135,7 +154,7 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName) {
     } catch (const std::exception&) {
       root = Teuchos::XMLObject();  // the parse below reports the syntax error
     }
-    if (!root.isEmpty()) checkXmlLiterals(root, "");
+    if (!root.isEmpty()) checkXmlLiterals(root, "", warnings);
   }
   try {
     deck = yaml ? Teuchos::getParametersFromYamlFile(fileName)

@@ -11,8 +11,12 @@
 
 namespace peridot {
 
-// Reads `fileName` (.xml, or .yaml/.yml with an optional top-level `Peridigm:` key).
-Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName);
+// Reads `fileName` (.xml, or .yaml/.yml with an optional top-level `Peridigm:` key). An XML
+// parameter repeated in one list with the same type and value is accepted, as Peridigm's parser
+// (which keeps the last) accepts it, and a sentence saying so is added to `warnings`; a
+// repeated parameter with another value or type, or a repeated list, is an error.
+Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName,
+                                              std::vector<std::string>* warnings = nullptr);
 
 // Parses deck text given in memory ("xml" or "yaml"), e.g. for tests.
 Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& format);

@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "deck/Expression.hpp"
+#include "deck/PeridigmVocabulary.hpp"
 
 namespace peridot {
 
@@ -160,9 +161,16 @@ ComputeConfig readCompute(ListReader c, const std::string& name) {
   ComputeConfig cc;
   cc.name = name;
   cc.path = c.path();
-  cc.computeClass = c.choice("Compute Class", {"Block_Data", "Node_Set_Data"});
-  cc.calculation = c.choice("Calculation Type", {"Sum", "Minimum", "Maximum"});
-  cc.region = c.string(cc.computeClass == "Block_Data" ? "Block" : "Node Set");
+  cc.computeClass =
+      c.choice("Compute Class", {"Block_Data", "Node_Set_Data", "Nearest_Point_Data"});
+  if (cc.computeClass == "Nearest_Point_Data") {
+    // The point nearest (X, Y, Z) in the reference configuration, ties to the smallest id.
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (int d = 0; d < 3; ++d) cc.point[d] = c.number(axes[d]);
+  } else {
+    cc.calculation = c.choice("Calculation Type", {"Sum", "Minimum", "Maximum"});
+    cc.region = c.string(cc.computeClass == "Block_Data" ? "Block" : "Node Set");
+  }
   cc.variable = c.string("Variable");
   cc.label = c.string("Output Label");
   if (cc.label.empty()) throw InputError(c.pathOf("Output Label"), "the label is empty");
@@ -190,6 +198,7 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Proc_Num", 1, "MPI rank owning the point"},
       {"Horizon", 1, "horizon of the point"},
       {"Number_Of_Neighbors", 1, "bonds of the point (at the start)"},
+      {"Radius", 1, "radius of the sphere of the point's volume, (3V/(4 pi))^(1/3)"},
       {"Model_Coordinates", 3, "reference coordinates"},
       {"Coordinates", 3, "current coordinates"},
       {"Displacement", 3, "displacement"},
@@ -366,6 +375,17 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
     }
   }
   if (!haveSolver) throw InputError("Solver", "required list is missing");
+  // Before the output variables: a Data Loader deck outputs the fields it loads.
+  const std::pair<const char*, const char*> features[] = {
+      {"Data Loader", "loading node data from an Exodus file"},
+      {"Multiphysics", "multiphysics (pore pressure) degrees of freedom"},
+      {"Optimization Based Coupling", "optimization-based coupling"}};
+  for (const auto& f : features) {
+    if (top.has(f.first)) {
+      throw InputError(f.first, std::string("Peridigm's ") + f.second + " (\"" + f.first +
+                                    "\") is not supported by Peridot yet");
+    }
+  }
 
   // Every requested output variable must be known (or a compute's label).
   for (const auto& out : config.outputs) {
@@ -373,6 +393,12 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
       if (findOutputVariable(v)) continue;
       bool isLabel = false;
       for (const auto& c : config.computes) isLabel = isLabel || c.label == v;
+      if (!isLabel && isIn(peridigmOutputVariablesNotYet(), v)) {
+        throw InputError(joinPath(joinPath(out.path, "Output Variables"), v),
+                         "the Peridigm output variable \"" + v +
+                             "\" is not supported by Peridot yet (doc/deck-reference.md lists "
+                             "the supported ones)");
+      }
       if (!isLabel) {
         throw InputError(joinPath(joinPath(out.path, "Output Variables"), v),
                          "unknown output variable (see doc/deck-reference.md for the list)");
@@ -381,11 +407,6 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   }
 
   if (top.has("Contact")) config.contact = readContactConfig(top.sublist("Contact"));
-  for (const char* unsupported : {"Data Loader", "Multiphysics", "Optimization Based Coupling"}) {
-    if (top.has(unsupported)) {
-      throw InputError(unsupported, "not supported by Peridot yet");
-    }
-  }
   if (top.has("Restart")) config.restart = readRestart(top, deck);
   config.restart.deckHash = deckHash(deck);
   top.finish();

@@ -74,6 +74,7 @@ struct RestartConfig {
 
 struct ComputeConfig {
   std::string name, path, computeClass, calculation, region, variable, label;
+  double point[3] = {0, 0, 0};  // Nearest_Point_Data: the location (X, Y, Z)
 };
 
 struct RunConfig {

@@ -491,11 +491,10 @@ void ShareReader::buildPoints(PointCloud& cloud) {
         for (int a = 0; a < 8; ++a) {
           for (int k = 0; k < 3; ++k) nodes[a][k] = coordinate(conn[a], k);
         }
-        // Peridigm places the point at the plain average of the corner nodes, not at the
-        // volume-weighted centroid (they differ for non-affine hexes); the golds need that. The
-        // volume is the exact trilinear one, taken unsigned so a mirrored node order is accepted.
-        hexNodeAverage(nodes, position);
-        volume = std::fabs(hexVolume(nodes));
+        // Peridigm's point and volume: the hex as 24 tetrahedra around its face and body
+        // centres, their volume-weighted centroid (not the corner mean, which differs on any
+        // non-parallelepiped hex). Unsigned, so a mirrored node order is accepted.
+        volume = std::fabs(hexTetCentroid(nodes, position));
       } else if (kind == ElementKind::Tet) {
         double nodes[4][3];
         for (int a = 0; a < 4; ++a) {
@@ -508,14 +507,14 @@ void ShareReader::buildPoints(PointCloud& cloud) {
         for (int a = 0; a < 4; ++a) {
           for (int k = 0; k < 2; ++k) nodes[a][k] = coordinate(conn[a], k);
         }
-        // As for hexes: the corner mean, the exact area, either orientation; but a bow tie or a
-        // re-entrant quad has no meaningful area (its bilinear map folds over).
+        // As for hexes: the area-weighted centroid, the exact area, either orientation; but a
+        // bow tie or a re-entrant quad has no meaningful area (its bilinear map folds over).
         if (!quadIsValid(nodes) && quadArea(nodes) != 0.0) {
           fail(key, block.label + ", element " + std::to_string(id) +
                         ": the quadrilateral is self-intersecting or not convex (inverted "
                         "element)");
         }
-        quadNodeAverage(nodes, position);
+        quadCentroid(nodes, position);
         volume = std::fabs(quadArea(nodes)) * thickness_;
       } else if (kind == ElementKind::Tri) {
         double nodes[3][2];

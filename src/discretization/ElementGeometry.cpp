@@ -75,6 +75,64 @@ double hexCentroid(const double nodes[8][3], double centroid[3]) {
   return volume;
 }
 
+namespace {
+
+// The 24 tetrahedra of a hex in Peridigm's order: for each face, its centre (the mean of the
+// corners listed, summed in that order) and four edges (a, b), each giving the tetrahedron
+// (a, b, face centre, body centre). The body centre is the mean of the centres of faces 4 and 5.
+struct HexFace {
+  int corners[4];
+  int edges[4][2];
+};
+constexpr HexFace kHexFaces[6] = {{{0, 1, 4, 5}, {{1, 0}, {5, 1}, {4, 5}, {0, 4}}},
+                                  {{1, 2, 5, 6}, {{2, 1}, {6, 2}, {5, 6}, {1, 5}}},
+                                  {{2, 3, 6, 7}, {{3, 2}, {7, 3}, {6, 7}, {2, 6}}},
+                                  {{0, 3, 4, 7}, {{0, 3}, {3, 7}, {7, 4}, {4, 0}}},
+                                  {{0, 1, 2, 3}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}}},
+                                  {{4, 5, 6, 7}, {{5, 4}, {4, 7}, {7, 6}, {6, 5}}}};
+
+// Signed volume of the tetrahedron (p0, p1, p2, p3): (p1-p0) . ((p2-p0) x (p3-p0)) / 6, the
+// terms grouped as Peridigm groups them so that its volumes and centroids come out to the bit.
+double signedTetVolume(const double* p0, const double* p1, const double* p2, const double* p3) {
+  double a[3], b[3], c[3];
+  for (int k = 0; k < 3; ++k) {
+    a[k] = p1[k] - p0[k];
+    b[k] = p2[k] - p0[k];
+    c[k] = p3[k] - p0[k];
+  }
+  return (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+          a[2] * (b[0] * c[1] - b[1] * c[0])) /
+         6.0;
+}
+
+}  // namespace
+
+double hexTetCentroid(const double nodes[8][3], double centroid[3]) {
+  double faceCentre[6][3];
+  for (int f = 0; f < 6; ++f) {
+    const int* n = kHexFaces[f].corners;
+    for (int k = 0; k < 3; ++k) {
+      faceCentre[f][k] = 0.25 * (nodes[n[0]][k] + nodes[n[1]][k] + nodes[n[2]][k] + nodes[n[3]][k]);
+    }
+  }
+  double body[3];
+  for (int k = 0; k < 3; ++k) body[k] = 0.5 * (faceCentre[4][k] + faceCentre[5][k]);
+  double volume = 0.0;
+  double moment[3] = {0.0, 0.0, 0.0};
+  for (int f = 0; f < 6; ++f) {
+    for (const auto& edge : kHexFaces[f].edges) {
+      const double* p0 = nodes[edge[0]];
+      const double* p1 = nodes[edge[1]];
+      const double* p2 = faceCentre[f];
+      const double v = signedTetVolume(p0, p1, p2, body);
+      volume += v;
+      for (int k = 0; k < 3; ++k) moment[k] += (p0[k] + p1[k] + p2[k] + body[k]) * 0.25 * v;
+    }
+  }
+  for (int k = 0; k < 3; ++k) centroid[k] = moment[k] / volume;
+  return volume;
+}
+
 double tetVolume(const double nodes[4][3]) {
   double e[3][3];
   for (int i = 0; i < 3; ++i) {
@@ -117,6 +175,23 @@ void quadNodeAverage(const double nodes[4][2], double average[2]) {
   for (int k = 0; k < 2; ++k) {
     average[k] = (nodes[0][k] + nodes[1][k] + nodes[2][k] + nodes[3][k]) / 4.0;
   }
+}
+
+double quadCentroid(const double nodes[4][2], double centroid[2]) {
+  double centre[2];
+  quadNodeAverage(nodes, centre);
+  double area = 0.0;
+  double moment[2] = {0.0, 0.0};
+  for (int a = 0; a < 4; ++a) {
+    const double* p = nodes[a];
+    const double* q = nodes[(a + 1) % 4];
+    const double twice =
+        (p[0] - centre[0]) * (q[1] - centre[1]) - (p[1] - centre[1]) * (q[0] - centre[0]);
+    area += 0.5 * twice;
+    for (int k = 0; k < 2; ++k) moment[k] += (p[k] + q[k] + centre[k]) / 3.0 * (0.5 * twice);
+  }
+  for (int k = 0; k < 2; ++k) centroid[k] = area == 0.0 ? centre[k] : moment[k] / area;
+  return area;
 }
 
 double triArea(const double nodes[3][2]) {

@@ -33,14 +33,24 @@ ElementKind classify(const std::string& topology, long long nodesPerElement);
 // coordinate). Positive for the Exodus (right-handed) node order, negative for a mirrored element.
 double hexVolume(const double nodes[8][3]);
 
-// Arithmetic mean of the 8 corner nodes. This is what Peridigm uses as the point position of a hex
-// element; it equals the true centroid for parallelepipeds but not for general (non-affine) hexes.
+// Arithmetic mean of the 8 corner nodes; it equals the centroid for parallelepipeds but not for
+// general (non-affine) hexes, where Peridigm's point is hexTetCentroid's.
 void hexNodeAverage(const double nodes[8][3], double average[3]);
 
 // Volume-weighted centroid (integral of x dV / V, exact with 2x2x2 Gauss points) of the trilinear
 // hexahedron; returns the signed volume as hexVolume does. The centroid is left at the node
 // average when the volume is zero.
 double hexCentroid(const double nodes[8][3], double centroid[3]);
+
+// Peridigm's point and volume of a hex element: the hex split into 24 tetrahedra, each made of
+// one edge of a face, that face's centre (the mean of its 4 corners) and the body centre (the
+// mean of the bottom and top face centres); the volume is their sum and the position their
+// volume-weighted centroid. Exact for hexes with planar faces (any shape, not only
+// parallelepipeds); the volume of a trilinear hex with warped faces too. Same operands in the
+// same order as Peridigm, so its points and volumes come out to the bit. Returns the signed
+// volume (negative for a mirrored node order; the centroid is right either way). The centroid
+// is not finite when the volume is zero.
+double hexTetCentroid(const double nodes[8][3], double centroid[3]);
 
 // Volume of the tetrahedron, positive whatever the node orientation (0 for a degenerate one).
 double tetVolume(const double nodes[4][3]);
@@ -59,8 +69,13 @@ double quadArea(const double nodes[4][2]);
 // collinear edges (a quad collapsed towards a triangle) is accepted.
 bool quadIsValid(const double nodes[4][2]);
 
-// Arithmetic mean of the 4 corner nodes: the point position, as hexNodeAverage is in 3D.
+// Arithmetic mean of the 4 corner nodes.
 void quadNodeAverage(const double nodes[4][2], double average[2]);
+
+// Area-weighted centroid of the quadrilateral (the 2D analogue of hexTetCentroid: four
+// triangles around the corner mean, exact for any convex quad); returns the signed area (the
+// same as quadArea up to rounding). The corner mean is returned for a zero area.
+double quadCentroid(const double nodes[4][2], double centroid[2]);
 
 // Signed area of the triangle, positive for counter-clockwise corners.
 double triArea(const double nodes[3][2]);

@@ -14,12 +14,12 @@ namespace peridot {
 //   (WEDGE, PYRAMID, BEAM, ...) are rejected as not supported yet.
 // - Planar meshes: QUAD/QUAD4/QUAD8/QUAD9/SHELL4 (the 4 corner nodes) and TRI/TRI3/TRI6/TRI7 (the
 //   3 corner nodes), in a num_dim = 2 file, or in a num_dim = 3 file whose nodes all have z = 0.
-//   The cloud is then 2D (dimension 2, z = 0): position = mean of the corner nodes, volume = exact
-//   element area x `thickness`. A mesh mixing planar and solid blocks, a planar mesh off z = 0, a
-//   solid block in a 2D file, and a self-intersecting or non-convex quad are errors.
-// - Each element becomes one point: position = arithmetic mean of its corner nodes (Peridigm's
-//   choice, which the regression golds encode; for a tet it is the true centroid, for a distorted
-//   hex it is not), volume = the exact element volume (trilinear hex, straight-edged tet).
+//   The cloud is then 2D (dimension 2, z = 0): position = area centroid of the element, volume =
+//   exact element area x `thickness`. A mesh mixing planar and solid blocks, a planar mesh off z =
+//   0, a solid block in a 2D file, and a self-intersecting or non-convex quad are errors.
+// - Each element becomes one point: for a hex, Peridigm's point and volume (hexTetCentroid: 24
+//   tetrahedra around the face and body centres; the volume-weighted centroid, not the corner
+//   mean); for a tet its centroid (the corner mean) and exact volume.
 // - Points are in file element order; globalId = Exodus element id (element number map, 1..n when
 //   the file has none) - 1; blockId = the Exodus element block id.
 // - blockNames holds every element block of the file, named as in the file or "block_<id>" when

@@ -32,6 +32,28 @@ void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& p
   }
   const bool one = s.influenceFunction == "One";
   const double kappa = inPlaneBulkModulus(youngsModulus(), poissonsRatio(), mode_);
+  if (s.dimension == 3 && mode_ != PlaneMode::ThreeD) {
+    // Peridigm's 2D form: a 3D cloud (one layer of solid elements, volumes = area x height),
+    // the 3D neighbourhood, and the plane micromodulus 12 K / (pi h delta^3) with K the bulk
+    // modulus of the deck (from E with nu = 1/3 or 1/4). Not the plane-stress continuum
+    // constant of a planar discretization (which uses kappa): Peridigm's own choice.
+    if (!(height_ > 0)) {
+      throw InputError("Materials -> Height",
+                       "required with \"Plane Stress\" or \"Plane Strain\" on a 3D "
+                       "discretization (Peridigm's 2D form: the thickness of the one layer of "
+                       "elements)");
+    }
+    if (!one) {
+      throw InputError("Discretization -> Influence Function",
+                       "\"Elastic Bond Based\" in Peridigm's 2D form (plane mode on a 3D "
+                       "discretization) is defined for the influence function One only");
+    }
+    for (int i : points) {
+      const double d = s.horizon[i];
+      micromodulus_[i] = 12.0 * bulkModulus_ / (kPi * height_ * d * d * d);
+    }
+    return;
+  }
   for (int i : points) {
     const double d = s.horizon[i];
     if (s.dimension == 3 && one) {
@@ -93,13 +115,16 @@ PERIDOT_REGISTER_MATERIAL(
          "positive number: E; Poisson's ratio is fixed: 1/4 in 3D and plane strain (K = 2E/3), "
          "1/3 in plane stress (K = E)"},
         {"Plane Stress",
-         "bool, default false: 2D plane stress (nu = 1/3), c = 4 kappa/(pi t J2), kappa = "
-         "E/(2(1-nu)); needs a planar discretization"},
+         "bool, default false: 2D plane stress (nu = 1/3). On a planar discretization c = 4 "
+         "kappa/(pi t J2), kappa = E/(2(1-nu)); on a 3D one (Peridigm's form, one layer of "
+         "elements) c = 12 K/(pi h delta^3) with h = Height"},
         {"Plane Strain",
-         "bool, default false: 2D plane strain (nu = 1/4), kappa = E/(2(1+nu)(1-2nu))"},
+         "bool, default false: 2D plane strain (nu = 1/4), kappa = E/(2(1+nu)(1-2nu)); on a 3D "
+         "discretization as Plane Stress (Peridigm's form)"},
         {"Height",
-         "positive number: thickness of a 2D model; if given it must equal the discretization's "
-         "thickness (Peridigm compatibility)"},
+         "positive number: thickness h of a 2D model; required with a plane mode on a 3D "
+         "discretization (Peridigm's form); on a planar one it must equal the discretization's "
+         "thickness"},
         {"Finite Difference Probe Length",
          "positive number: accepted for Peridigm decks, unused"}}))
 

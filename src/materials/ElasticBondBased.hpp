@@ -17,6 +17,7 @@ class ElasticBondBased : public MaterialModel {
   }
   double poissonsRatio() const override { return bondBasedPoissonsRatio(mode_); }
   PlaneMode planeMode() const override { return mode_; }
+  bool acceptsPlaneModeIn3D() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }

@@ -104,7 +104,7 @@ void MaterialModel::checkAssumedInfluenceFunction(const ModelState& s) const {
 
 void MaterialModel::checkDimension(const ModelState& s, const std::string& modelName) const {
   const bool planar = planeMode() != PlaneMode::ThreeD;
-  if (planar && s.dimension != 2) {
+  if (planar && s.dimension != 2 && !acceptsPlaneModeIn3D()) {
     throw InputError("Materials", "the \"" + modelName +
                                       "\" material is plane stress or plane strain but the "
                                       "discretization is 3-dimensional");

@@ -80,6 +80,9 @@ class MaterialModel {
   // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it
   // matches the discretization's dimension.
   virtual PlaneMode planeMode() const { return PlaneMode::ThreeD; }
+  // Whether a plane mode may also run on a 3D cloud (Peridigm's 2D bond-based form: one layer
+  // of solid elements, 3D points, a 2D micromodulus).
+  virtual bool acceptsPlaneModeIn3D() const { return false; }
   // Whether the model honours the influence function of that name (bond-based micromoduli
   // are derived for omega = 1 only unless the model says otherwise).
   virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }

@@ -33,7 +33,7 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     auto it =
         std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
     if (it == files_.end()) {
-      files_.push_back(File{path, {}, {}, {}, nullptr});
+      files_.push_back(File{path, {}, {}, {}, nullptr, onlyGlobal});
       it = files_.end() - 1;
     }
     for (const auto& v : out.variables)
@@ -60,6 +60,15 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
   }
   for (auto& f : files_) {
     f.header = header;
+    if (f.onlyGlobal) {
+      // As Peridigm: one node at the origin, one unnamed SPHERE element in block 1, no sets.
+      f.header.numPoints = 1;
+      f.header.blockIds = {1};
+      f.header.blockNames.clear();
+      f.header.blockCounts = {1};
+      f.header.setNames.clear();
+      f.header.setSizes.clear();
+    }
     const char* axes[3] = {"X", "Y", "Z"};
     for (const auto& v : f.variables) {
       const int c = source.components(v);
@@ -68,7 +77,8 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
       } else if (c == 1) {
         f.header.elementNames.push_back(v);
       } else if (source.globalSize(v) == 3) {
-        for (int d = 0; d < dimension_; ++d) f.header.globalNames.push_back(v + axes[d]);
+        for (int d = 0; d < dimension_; ++d)
+          f.header.globalNames.push_back(source.globalComponentName(v, d));
       } else {
         f.header.globalNames.push_back(v);
       }
@@ -152,6 +162,13 @@ void OutputManager::open(const double* resumeTime, std::vector<std::string>* mes
 }
 
 void OutputManager::writeMesh(File& f) {
+  if (f.onlyGlobal) {
+    const long long id = 1;
+    const double origin[3] = {0.0, 0.0, 0.0};
+    onRoot([&] { f.writer->putMesh(0, 1, &id, origin); });
+    raiseErrors();
+    return;
+  }
   const OutputDistribution& d = *distribution_;
   const int n = topology_.numOwned;
   {

@@ -26,6 +26,10 @@ class VariableSource {
   virtual int components(const std::string& name) const = 0;  // 0 = global
   // Values of a global variable (1, or 3 for a vector); not collective.
   virtual int globalSize(const std::string& name) const = 0;
+  // The file's name of component d of a vector global variable.
+  virtual std::string globalComponentName(const std::string& name, int d) const {
+    return name + std::string(1, "XYZ"[d]);
+  }
 };
 
 class OutputManager {
@@ -62,6 +66,9 @@ class OutputManager {
     std::vector<Trigger> triggers;
     ExodusHeader header;
     std::unique_ptr<ExodusWriter> writer;  // rank 0
+    // Global variables only (a `.h` file): Peridigm's placeholder mesh of one node and one
+    // element instead of the points.
+    bool onlyGlobal = false;
   };
   bool fires(const File& f, long long step) const;
   // Collective: creates the files (or continues them: `resumeTime` set, `messages` filled).

@@ -264,3 +264,11 @@ peridot_baddeck(pv_horizons DECK pv_horizons.yaml
 peridot_baddeck(pv_element_horizon DECK pv_element_horizon.yaml
   EXPECT [[Discretization -> Compute Element-Horizon Intersections: Peridot does not intersect the mesh's elements]]
   ALSO [[`Partial Volumes: true`]])
+
+# ---- Peridigm features Peridot lacks: named as such (issue 12) ----
+peridot_baddeck(peridigm_output_variable DECK peridigm_output_variable.yaml
+  EXPECT [[Output -> Output Variables -> Partial_Stress: the Peridigm output variable "Partial_Stress" is not supported by Peridot yet]])
+peridot_baddeck(data_loader DECK data_loader.yaml
+  EXPECT [[Data Loader: Peridigm's ]] ALSO [[("Data Loader") is not supported by Peridot yet]])
+peridot_baddeck(peridigm_material_model DECK peridigm_material_model.yaml
+  EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Elastic Plastic" is not supported by Peridot yet]])

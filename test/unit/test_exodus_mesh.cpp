@@ -149,7 +149,7 @@ TEST(ElementGeometry, FrustumHexVolumeAndCentroid) {
   EXPECT_NEAR(centroid[0], 1.0, 1e-14);
   EXPECT_NEAR(centroid[1], 1.0, 1e-14);
   EXPECT_NEAR(centroid[2], 11.0 / 28.0, 1e-14);
-  peridot::hexNodeAverage(nodes, average);  // what the reader (and Peridigm) use
+  peridot::hexNodeAverage(nodes, average);  // not the point: see hexTetCentroid
   EXPECT_DOUBLE_EQ(average[0], 1.0);
   EXPECT_DOUBLE_EQ(average[1], 1.0);
   EXPECT_DOUBLE_EQ(average[2], 0.5);
@@ -183,6 +183,118 @@ TEST(ElementGeometry, DistortedHexMatchesIndependentIntegration) {
   moved[6][0] = moved[6][1] = moved[6][2] = 1.5;
   double c[3];
   EXPECT_NEAR(peridot::hexVolume(moved), referenceHex(moved, c), 1e-13);
+}
+
+// ---- Peridigm's hex point: 24 tetrahedra ----
+
+// A hex of planar faces is the polyhedron itself, so its centroid is a property of the solid:
+// a truncated pyramid over a general quadrilateral (top = bottom scaled by 0.6 towards an apex
+// off the axis), i.e. skewed and graded. Gold: the independent Gauss integration referenceHex.
+TEST(ElementGeometry, HexTetCentroidIsExactForPlanarFaces) {
+  const double bottom[4][3] = {{0, 0, 0}, {2.0, 0.3, 0}, {2.4, 1.9, 0}, {-0.2, 1.5, 0}};
+  const double apex[3] = {1.7, 0.4, 3.0};
+  double nodes[8][3];
+  for (int a = 0; a < 4; ++a) {
+    for (int k = 0; k < 3; ++k) {
+      nodes[a][k] = bottom[a][k];
+      nodes[a + 4][k] = apex[k] + 0.6 * (bottom[a][k] - apex[k]);
+    }
+  }
+  double expected[3], centroid[3], average[3];
+  const double volume = referenceHex(nodes, expected);
+  EXPECT_NEAR(peridot::hexTetCentroid(nodes, centroid), volume, 1e-13);
+  peridot::hexNodeAverage(nodes, average);
+  double offset = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(centroid[k], expected[k], 1e-13) << k;
+    offset = std::max(offset, std::fabs(average[k] - expected[k]));
+  }
+  EXPECT_GT(offset, 0.05);  // the corner mean is far off: the test can tell them apart
+}
+
+TEST(ElementGeometry, HexTetCentroidOfAFrustum) {
+  // The frustum above, by hand: V = 7/3, centroid (1, 1, 11/28) where the corner mean has z = 1/2.
+  const double nodes[8][3] = {{0, 0, 0},       {2, 0, 0},       {2, 2, 0},       {0, 2, 0},
+                              {0.5, 0.5, 1.0}, {1.5, 0.5, 1.0}, {1.5, 1.5, 1.0}, {0.5, 1.5, 1.0}};
+  double c[3];
+  EXPECT_NEAR(peridot::hexTetCentroid(nodes, c), 7.0 / 3.0, 1e-14);
+  EXPECT_NEAR(c[0], 1.0, 1e-14);
+  EXPECT_NEAR(c[1], 1.0, 1e-14);
+  EXPECT_NEAR(c[2], 11.0 / 28.0, 1e-14);
+}
+
+// A cylinder's element: the annular sector r in [r1, r2], theta in [t1, t2], z in [0, h], with
+// straight chords. Its section is the quadrilateral of the four corners, extruded along z, so the
+// centroid is the section's (polygon formula, by hand) at z = h/2 and the volume area x h.
+TEST(ElementGeometry, HexTetCentroidOfACylinderSector) {
+  const double r1 = 1.0, r2 = 1.5, t1 = 0.3, t2 = 0.3 + 0.4, h = 0.25;
+  const double q[4][2] = {{r1 * std::cos(t1), r1 * std::sin(t1)},
+                          {r2 * std::cos(t1), r2 * std::sin(t1)},
+                          {r2 * std::cos(t2), r2 * std::sin(t2)},
+                          {r1 * std::cos(t2), r1 * std::sin(t2)}};
+  double area = 0.0, cx = 0.0, cy = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    const double* p = q[a];
+    const double* n = q[(a + 1) % 4];
+    const double cross = p[0] * n[1] - n[0] * p[1];
+    area += 0.5 * cross;
+    cx += (p[0] + n[0]) * cross / 6.0;
+    cy += (p[1] + n[1]) * cross / 6.0;
+  }
+  cx /= area;
+  cy /= area;
+  double nodes[8][3];
+  for (int a = 0; a < 4; ++a) {
+    nodes[a][0] = nodes[a + 4][0] = q[a][0];
+    nodes[a][1] = nodes[a + 4][1] = q[a][1];
+    nodes[a][2] = 0.0;
+    nodes[a + 4][2] = h;
+  }
+  double c[3], average[3];
+  EXPECT_NEAR(peridot::hexTetCentroid(nodes, c), area * h, 1e-14);
+  EXPECT_NEAR(c[0], cx, 1e-14);
+  EXPECT_NEAR(c[1], cy, 1e-14);
+  EXPECT_NEAR(c[2], h / 2, 1e-14);
+  peridot::hexNodeAverage(nodes, average);
+  EXPECT_GT(std::hypot(average[0] - cx, average[1] - cy), 1e-3);  // 0.2% of the element size
+}
+
+// With warped faces the split is an approximation of the trilinear solid: its volume is still
+// exact (the fan around each face centre integrates the bilinear face exactly), its centroid not.
+TEST(ElementGeometry, HexTetVolumeIsTheTrilinearVolumeForWarpedFaces) {
+  double nodes[8][3];
+  std::copy(&kUnitCube[0][0], &kUnitCube[0][0] + 24, &nodes[0][0]);
+  nodes[6][0] = 1.6;
+  nodes[6][1] = 1.3;
+  nodes[6][2] = 1.45;
+  nodes[1][2] = 0.2;
+  nodes[3][0] = -0.15;
+  nodes[4][1] = 0.1;
+  double expected[3], c[3];
+  EXPECT_NEAR(peridot::hexTetCentroid(nodes, c), referenceHex(nodes, expected), 1e-13);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], expected[k], 0.02);
+  double mirrored[8][3];
+  for (int a = 0; a < 8; ++a) std::copy(nodes[(a + 4) % 8], nodes[(a + 4) % 8] + 3, mirrored[a]);
+  double m[3];
+  EXPECT_NEAR(peridot::hexTetCentroid(mirrored, m), -referenceHex(nodes, expected), 1e-13);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(m[k], c[k], 1e-14);
+}
+
+TEST(ElementGeometry, QuadCentroidIsThePolygonCentroid) {
+  const double q[4][2] = {{0.1, -0.2}, {2.3, 0.1}, {1.9, 1.7}, {-0.4, 1.1}};
+  double area = 0.0, cx = 0.0, cy = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    const double* p = q[a];
+    const double* n = q[(a + 1) % 4];
+    const double cross = p[0] * n[1] - n[0] * p[1];
+    area += 0.5 * cross;
+    cx += (p[0] + n[0]) * cross / 6.0;
+    cy += (p[1] + n[1]) * cross / 6.0;
+  }
+  double c[2];
+  EXPECT_NEAR(peridot::quadCentroid(q, c), area, 1e-14);
+  EXPECT_NEAR(c[0], cx / area, 1e-14);
+  EXPECT_NEAR(c[1], cy / area, 1e-14);
 }
 
 TEST(ElementGeometry, MirroredHexHasNegativeVolume) {
@@ -264,6 +376,34 @@ TEST(ExodusMeshReader, PositionsMatchPeridigmGolds) {
                            kCases + "/Contact_Cubes/Contact_Cubes_gold.e");
   expectPositionsMatchGold(kCases + "/ElasticBondBased3D/ElasticBondBased3D.g",
                            kCases + "/ElasticBondBased3D/ElasticBondBased3D_gold.e");
+}
+
+// Peridigm 1.5 wrote ElasticBondBased3D's gold: its points and volumes are reproduced to the
+// bit (the 24-tetrahedra split, same operands, same order, no fused multiply-add). The WaveInBar
+// and Contact_Cubes golds come from an older Peridigm that used the corner mean: on their box
+// meshes the two differ by rounding only (below 1e-15).
+TEST(ExodusMeshReader, ElasticBondBased3DPointsAreBitwisePeridigms) {
+  const auto cloud =
+      peridot::readExodusMesh(kCases + "/ElasticBondBased3D/ElasticBondBased3D.g", kDeckPath);
+  const auto gold =
+      peridot::readExodusResults(kCases + "/ElasticBondBased3D/ElasticBondBased3D_gold.e");
+  const auto it = std::find(gold.elementNames.begin(), gold.elementNames.end(), "Volume");
+  ASSERT_NE(it, gold.elementNames.end());
+  const auto& volume = gold.element[static_cast<std::size_t>(it - gold.elementNames.begin())][0];
+  std::vector<long long> index(385, -1);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    index[static_cast<std::size_t>(cloud.globalId[i])] = static_cast<long long>(i);
+  }
+  ASSERT_EQ(gold.nodeIds.size(), 384u);
+  for (std::size_t n = 0; n < gold.nodeIds.size(); ++n) {
+    const auto p = static_cast<std::size_t>(index[static_cast<std::size_t>(gold.nodeIds[n] - 1)]);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(cloud.x[3 * p + k], gold.nodeCoordinates[3 * n + k]);
+  }
+  for (std::size_t e = 0; e < gold.elementIds.size(); ++e) {
+    const auto p =
+        static_cast<std::size_t>(index[static_cast<std::size_t>(gold.elementIds[e] - 1)]);
+    EXPECT_EQ(cloud.volume[p], volume[e]);
+  }
 }
 
 TEST(ExodusMeshReader, ElasticBondBased3DVolumesBlocksAndMapMatchGold) {
@@ -573,8 +713,10 @@ TEST(ExodusMeshReader, ReadsQuadAndTriBlocksAsAPlanarCloud) {
   EXPECT_DOUBLE_EQ(cloud.volume[0], 1.0 * thickness);
   EXPECT_DOUBLE_EQ(cloud.volume[1], 1.5 * thickness);
   EXPECT_DOUBLE_EQ(cloud.volume[2], 1.5 * thickness);
-  // Positions: corner means (z = 0).
-  const std::vector<double> expected = {0.5, 0.5, 0.0, 7.0 / 4, 0.5, 0.0, 1.5, 2.0, 0.0};
+  // Positions: area centroids (z = 0). The trapezoid (1,0) (1,1) (2,1) (3,0) is the unit square
+  // [1,2]x[0,1] (centroid (3/2, 1/2)) plus the triangle (2,0) (3,0) (2,1) (area 1/2, centroid
+  // (7/3, 1/3)): ((3/2 + 7/6) / (3/2), (1/2 + 1/6) / (3/2)) = (16/9, 4/9).
+  const std::vector<double> expected = {0.5, 0.5, 0.0, 16.0 / 9, 4.0 / 9, 0.0, 1.5, 2.0, 0.0};
   ASSERT_EQ(cloud.x.size(), expected.size());
   for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(cloud.x[k], expected[k], 1e-15);
   ASSERT_EQ(cloud.pointSets.size(), 2u);
