@@ -69,3 +69,5 @@ peridot_identical(PlasticCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plast
                   PlasticCube.xml PlasticCube.e exact_plastic.comp 2744)
 peridot_identical(PlasticBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PlasticBar
                   PlasticBar.xml PlasticBar.e exact_plastic.comp 0)
+peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
+                  ViscoBar.xml ViscoBar.e exact_visco.comp 0)
