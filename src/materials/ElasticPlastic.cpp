@@ -133,6 +133,7 @@ void ElasticPlastic::precomputeLoop(const ModelState& s, const std::vector<int>&
     const double m = weightedVolume_[i];
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     double theta = 0;
+#pragma omp simd reduction(+ : theta)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
@@ -145,6 +146,7 @@ void ElasticPlastic::precomputeLoop(const ModelState& s, const std::vector<int>&
     theta = m > 0 ? theta : 0.0;
     const double alpha = moduli_[3 * i];
     double normSquared = 0;
+#pragma omp simd reduction(+ : normSquared)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
@@ -191,6 +193,7 @@ void ElasticPlastic::forceLoop(const ModelState& s, const std::vector<int>& poin
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     const double thetaI = ret[3 * i], scaleI = ret[3 * i + 1], dLambdaI = ret[3 * i + 2];
     const double alphaI = mod[3 * i], isoI = mod[3 * i + 1] * thetaI;
+#pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;

@@ -103,6 +103,7 @@ void Viscoelastic::forceLoop(const ModelState& s, const std::vector<int>& points
     const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
     const double alphaI = m[i] > 0 ? 15.0 * G / m[i] : 0.0;
     const double isoI = m[i] > 0 ? 3.0 * K * theta[i] / m[i] : 0.0;
+#pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = s.y[3 * j] - yi0, Y1 = s.y[3 * j + 1] - yi1, Y2 = s.y[3 * j + 2] - yi2;
