@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "core/Error.hpp"
 #include "materials/ShearCorrection.hpp"

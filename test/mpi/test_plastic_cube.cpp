@@ -86,9 +86,10 @@ TEST(PlasticCubeDeck, BulkLambdaFollowsTheLatticeHandComputation) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0)
-    std::printf("  PlasticCube: largest Lambda %.6g, bulk |Lambda - gold| / largest %.2e, "
-                "|theta - eps| / eps_max %.2e\n",
-                largestLambda, global[0] / largestLambda, global[1] / rate);
+    std::printf(
+        "  PlasticCube: largest Lambda %.6g, bulk |Lambda - gold| / largest %.2e, "
+        "|theta - eps| / eps_max %.2e\n",
+        largestLambda, global[0] / largestLambda, global[1] / rate);
   EXPECT_EQ(steps, 61);
   EXPECT_GT(largestLambda, 100.0);  // the path is well past yield, both ways
   // Relative to the largest values: the gold is small-strain, the run's bonds stretch by up to
