@@ -87,7 +87,7 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     if (s_.contactForceDensity) copy(s_.contactForceDensity);
   } else if (name == "Damage") {
     s_.evaluator->nodeDamage(out.data());
-  } else if (name == "Dilatation" || name == "Weighted_Volume") {
+  } else if (name == "Dilatation" || name == "Weighted_Volume" || name == "Lambda") {
     copy(s_.fields->node(name, 1));
   } else if (name == "Kinetic_Energy") {
     for (int i = 0; i < n; ++i) {

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <limits>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "bc/NodeSets.hpp"
@@ -367,10 +368,19 @@ Simulation::~Simulation() = default;
 
 void Simulation::checkVariables() {
   bool lps = false;
-  for (const auto& b : blocks_) lps = lps || b.material->family() == "LPS";
+  std::set<std::string> modelFields;  // node fields the materials maintain
+  for (const auto& b : blocks_) {
+    lps = lps || b.material->family() == "LPS";
+    for (const auto& f : b.material->outputFields()) modelFields.insert(f);
+  }
   auto check = [&](const std::string& v, const std::string& path) {
-    if ((v == "Dilatation" || v == "Weighted_Volume") && !lps) {
+    if ((v == "Dilatation" || v == "Weighted_Volume") && !lps && !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a state-based material (e.g. \"Elastic\")");
+    }
+    if (v == "Lambda" && !modelFields.count(v)) {
+      throw InputError(path,
+                       "\"Lambda\" needs an elastic-plastic material (e.g. \"Elastic "
+                       "Plastic\")");
     }
   };
   for (const auto& out : config_.outputs)

@@ -1,5 +1,6 @@
 // Simulation's restart pieces: continuing from a checkpoint and writing one. Kept apart from
 // Simulation.cpp, which holds the set-up and the time loop.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -72,6 +73,10 @@ void Simulation::writeCheckpoint(long long step) {
   // first continued step (when it is a search step) reads y of the checkpoint's step.
   std::vector<std::string> nodeFields = {"Displacement", "Velocity", "Acceleration", "Coordinates"};
   if (contact_) nodeFields.push_back(kContactSearchPositions);
+  for (const auto& b : blocks_)  // the models' per-point history (plastic multiplier, ...)
+    for (const auto& f : b.material->historyNodeFields())
+      if (std::find(nodeFields.begin(), nodeFields.end(), f) == nodeFields.end())
+        nodeFields.push_back(f);
   CheckpointClock clock;
   clock.step = step;
   clock.time = time_;

@@ -211,6 +211,7 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Damage", 1, "fraction of broken bonds"},
       {"Dilatation", 1, "LPS dilatation"},
       {"Weighted_Volume", 1, "LPS weighted volume"},
+      {"Lambda", 1, "plastic multiplier of the elastic-plastic models"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},

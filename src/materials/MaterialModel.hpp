@@ -75,6 +75,9 @@ class MaterialModel {
                             double* sum) const;
   // Node fields the model maintains that a user may output (e.g. "Dilatation").
   virtual std::vector<std::string> outputFields() const { return {}; }
+  // Node fields that carry history from step to step (e.g. the plastic multiplier "Lambda"):
+  // the checkpoint saves and restores their owned values. (Bond fields are always saved.)
+  virtual std::vector<std::string> historyNodeFields() const { return {}; }
   // A tag shared by models whose points may be bonded to each other.
   virtual std::string family() const = 0;
   // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it

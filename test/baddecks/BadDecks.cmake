@@ -129,6 +129,10 @@ peridot_baddeck(unknown_material_model DECK unknown_material_model.yaml
   EXPECT [[Materials -> My Material -> Material Model: unknown material model "Elastik"; Peridot knows "Elastic", "Elastic Bond Based"]])
 peridot_baddeck(unknown_damage_model DECK unknown_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: unknown damage model "Critical Strain"]])
+peridot_baddeck(unsupported_material_model DECK unsupported_material_model.yaml
+  EXPECT [[Materials -> My Material -> Material Model: Peridigm's material model "Elastic Correspondence" is not supported by Peridot]])
+peridot_baddeck(unsupported_damage_model DECK unsupported_damage_model.yaml
+  EXPECT [[Damage Models -> My Damage -> Damage Model: Peridigm's damage model "Johnson Cook" is not supported by Peridot]])
 peridot_baddeck(ebb_two_constants DECK ebb_two_constants.yaml
   EXPECT [[Materials -> My Material -> Shear Modulus: a bond-based material has one elastic constant]])
 peridot_baddeck(elastic_one_constant DECK elastic_one_constant.yaml

@@ -62,3 +62,12 @@ peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Pa
 # A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
                   Plate2D.e exact_2d.comp 600)
+# Elastic-plastic decks (ordinary state-based plasticity, history in bond fields): bitwise equal
+# at 1-4 ranks; the cube's bulk values are also checked against a hand computation
+# (test/mpi/test_plastic_cube.cpp).
+peridot_identical(PlasticCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PlasticCube
+                  PlasticCube.xml PlasticCube.e exact_plastic.comp 2744)
+peridot_identical(PlasticBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PlasticBar
+                  PlasticBar.xml PlasticBar.e exact_plastic.comp 0)
+peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
+                  ViscoBar.xml ViscoBar.e exact_visco.comp 0)

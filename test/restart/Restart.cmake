@@ -35,3 +35,6 @@ peridot_restart_test(peridigm_perforation peridigm PeridigmPerforation.xml.in 4.
 peridot_restart_test(split_lsjt split LSJT.yaml.in 1.0e-5 5.0e-6 10 "Damage")
 peridot_restart_test(signal signal Perforation.yaml.in 6.0e-5 0 10 "Damage")
 peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
+# Elastic-plastic history (bond fields and the node field Lambda) across a restart.
+peridot_restart_test(split_plastic split Plastic.yaml.in 16.0 8.0 10 "Lambda")
+peridot_restart_test(split_visco split Visco.yaml.in 16.0 8.0 10 "Dilatation")

@@ -1,0 +1,109 @@
+// Cost of one force evaluation (precompute + force, as the evaluator runs them on one rank) per
+// bond entry for each ordinary state-based model, against "Elastic" (LPS) on the same scene: a
+// 40^3 cube, delta = 3.015 dx, stretched anisotropically (deviatoric strain ~1e-4) so that the
+// plastic models yield at every step (sigma_Y = 1e-6 G) and take their plastic branch.
+// Usage: bench_material_cost [--benchmark_min_time=1] [--benchmark_repetitions=5]
+#include <benchmark/benchmark.h>
+#include <mpi.h>
+
+#include <Teuchos_ParameterList.hpp>
+#include <map>
+#include <memory>
+
+#include "evaluator/ModelEvaluator.hpp"
+
+using namespace peridot;
+
+namespace {
+
+struct Scene {
+  PointCloud cloud;
+  Topology topology;
+  std::unique_ptr<FieldManager> fields;
+  std::vector<Block> blocks;
+  Timers timers;
+  std::unique_ptr<ModelEvaluator> evaluator;
+
+  Scene(int n, const std::string& model) {
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
+          cloud.volume.push_back(1.0);
+          cloud.blockId.push_back(1);
+          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
+        }
+    cloud.blockNames[1] = "block_1";
+    std::vector<double> h(cloud.size(), 3.015);
+    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
+    fields = std::make_unique<FieldManager>(topology);
+    double* x = fields->node("Model_Coordinates", 3);
+    double* y = fields->node("Coordinates", 3);
+    double* v = fields->node("Volume", 1);
+    double* hz = fields->node("Horizon", 1);
+    for (int p = 0; p < topology.numOverlap; ++p) {
+      for (int d = 0; d < 3; ++d) x[3 * p + d] = topology.referencePosition[3 * p + d];
+      y[3 * p] = x[3 * p] * (1 + 1e-4);
+      y[3 * p + 1] = x[3 * p + 1] * (1 - 0.5e-4);
+      y[3 * p + 2] = x[3 * p + 2];
+      v[p] = 1.0;
+      hz[p] = 3.015;
+    }
+    Teuchos::ParameterList m;
+    m.set("Material Model", model);
+    m.set("Density", 1.0);
+    m.set("Bulk Modulus", 5.0 / 3.0);
+    m.set("Shear Modulus", 1.0);
+    if (model.find("Plastic") != std::string::npos) m.set("Yield Stress", 1e-6);
+    if (model == "Elastic Plastic Hardening") m.set("Hardening Modulus", 1e-16);
+    if (model == "Viscoelastic") {
+      m.set("lambda_i", 0.5);
+      m.set("tau b", 10.0);
+    }
+    ListReader mr(m, "Materials -> M");
+    Block b;
+    b.name = "block_1";
+    b.id = 1;
+    b.material = createMaterial(mr);
+    for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
+    blocks.push_back(b);
+    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    evaluator->initialize();
+  }
+};
+
+std::map<std::string, std::unique_ptr<Scene>> scenes;  // destroyed before MPI_Finalize
+
+void Evaluate(benchmark::State& state, const std::string& model) {
+  auto& s = scenes[model];
+  if (!s) s = std::make_unique<Scene>(40, model);
+  ModelState st = s->evaluator->state();
+  st.dt = 1.0;
+  Block& b = s->blocks[0];
+  for (auto _ : state) {
+    b.material->precompute(st, b.points);
+    b.material->computeForce(st, b.points);
+  }
+  // Bond entries per evaluation: divide the CPU time by it for the cost per bond update.
+  state.counters["bond_entries"] = static_cast<double>(s->topology.numBonds());
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(Evaluate, Elastic, std::string("Elastic"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticPlastic, std::string("Elastic Plastic"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticPlasticHardening, std::string("Elastic Plastic Hardening"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, Viscoelastic, std::string("Viscoelastic"))
+    ->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  scenes.clear();
+  MPI_Finalize();
+  return 0;
+}

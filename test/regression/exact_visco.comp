@@ -1,0 +1,13 @@
+# Rank-count invariance of the viscoelastic decks: every variable to the bit.
+DEFAULT TOLERANCE absolute 0.0
+COORDINATES absolute 0.0
+TIME STEPS absolute 0.0
+NODAL VARIABLES absolute 0.0
+	DisplacementX	absolute 0.0
+	DisplacementY	absolute 0.0
+	DisplacementZ	absolute 0.0
+	Force_DensityX	absolute 0.0
+	Force_DensityY	absolute 0.0
+	Force_DensityZ	absolute 0.0
+ELEMENT VARIABLES absolute 0.0
+	Dilatation	absolute 0.0
