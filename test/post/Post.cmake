@@ -1,0 +1,13 @@
+# The Python post-processing package (python/peridot_post) on a small run's output, and the
+# Gmsh example from its .geo to PNGs. Debian's python3 (python3-netcdf4, numpy, matplotlib).
+set(PERIDOT_PYTHON /usr/bin/python3 CACHE FILEPATH "Python 3 with netCDF4, numpy and matplotlib")
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/post)
+add_test(NAME post_processing
+  COMMAND ${PERIDOT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/post/test_post.py $<TARGET_FILE:peridot>
+          ${PROJECT_SOURCE_DIR}/python ${CMAKE_CURRENT_SOURCE_DIR}/post/small.yaml
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/post)
+set_tests_properties(post_processing PROPERTIES LABELS "post" TIMEOUT 300)
+add_test(NAME example_gmsh_plate COMMAND bash ${PROJECT_SOURCE_DIR}/examples/gmsh_plate/run.sh)
+set_tests_properties(example_gmsh_plate PROPERTIES LABELS "post;example" TIMEOUT 300
+  SKIP_RETURN_CODE 77
+  ENVIRONMENT "PERIDOT=$<TARGET_FILE:peridot>;WORK=${CMAKE_CURRENT_BINARY_DIR}/examples/gmsh_plate")
