@@ -3,11 +3,14 @@
 # CSV profile (python3 -m peridot_post). Runs in a few seconds.
 #   bash run.sh                    # in this folder, with ../../build/peridot
 #   PERIDOT=/path/to/peridot WORK=/some/dir bash run.sh
+# Installed (cmake --install): peridot and peridot-post are taken from PATH.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-PERIDOT="${PERIDOT:-$here/../../build/peridot}"
+if [ -z "${PERIDOT:-}" ]; then
+  PERIDOT="$here/../../build/peridot"
+  [ -x "$PERIDOT" ] || PERIDOT=peridot
+fi
 WORK="${WORK:-$here}"
-export PYTHONPATH="${PERIDOT_PYTHONPATH:-$here/../../python}${PYTHONPATH:+:$PYTHONPATH}"
 if ! command -v gmsh > /dev/null; then
   echo "gmsh is not installed (apt-get install gmsh, or bash scripts/install-deps.sh): skipped"
   exit 77
@@ -17,7 +20,13 @@ mkdir -p "$WORK"
 cd "$WORK"
 gmsh -2 plate.geo -format msh41 -o plate.msh > gmsh.log
 "$PERIDOT" plate.yaml
-post() { /usr/bin/python3 -m peridot_post "$@"; }
+post() {
+  if [ -d "$here/../../python/peridot_post" ]; then
+    PYTHONPATH="$here/../../python${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -m peridot_post "$@"
+  else
+    peridot-post "$@"
+  fi
+}
 post info plate.e
 post plot plate.e --globals Global_Kinetic_Energy Global_Stored_Elastic_Energy -o energies.png \
   --title "Plate with a hole: energies (J)"
