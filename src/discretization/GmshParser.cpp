@@ -61,6 +61,21 @@ GmshElementType gmshElementType(int type) {
 
 namespace {
 
+// A word from the file as it may appear in a message: non-printable bytes as \xHH, cut at 40.
+std::string printable(const std::string& word) {
+  std::string out;
+  for (std::size_t i = 0; i < word.size() && i < 40; ++i) {
+    const auto c = static_cast<unsigned char>(word[i]);
+    if (c >= 32 && c < 127) {
+      out.push_back(static_cast<char>(c));
+    } else {
+      const char* hex = "0123456789abcdef";
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    }
+  }
+  return word.size() > 40 ? out + "..." : out;
+}
+
 // A byte reader over the file that knows its offset and (for text) its line, so that every
 // message can say where the problem is. All reads stop at the end of the file with an error.
 class Cursor {
@@ -132,7 +147,7 @@ class Cursor {
     char* end = nullptr;
     const long long v = std::strtoll(word.c_str(), &end, 10);
     if (end != word.c_str() + word.size() || errno == ERANGE) {
-      fail("expected " + std::string(what) + " (an integer), found \"" + word + "\"");
+      fail("expected " + std::string(what) + " (an integer), found \"" + printable(word) + "\"");
     }
     return checkRange(v, what, lo, hi);
   }
@@ -142,7 +157,7 @@ class Cursor {
     char* end = nullptr;
     const double v = std::strtod(word.c_str(), &end);
     if (end != word.c_str() + word.size()) {
-      fail("expected " + std::string(what) + " (a number), found \"" + word + "\"");
+      fail("expected " + std::string(what) + " (a number), found \"" + printable(word) + "\"");
     }
     return checkFinite(v, what);
   }
@@ -246,7 +261,8 @@ struct Parse {
   void expectEnd(const std::string& section) {
     const std::string word = c.token(("$End" + section).c_str(), 64);
     if (word != "$End" + section) {
-      c.fail("expected $End" + section + ", found \"" + word + "\" (a wrong count, or truncated)");
+      c.fail("expected $End" + section + ", found \"" + printable(word) +
+             "\" (a wrong count, or truncated)");
     }
   }
 
@@ -258,7 +274,7 @@ struct Parse {
              " is not supported; save the mesh as format 4.1 or 2.2 (gmsh -format msh41)");
     }
     if (header.version != "4.1" && header.version != "2.2") {
-      c.fail("expected format version 4.1 or 2.2, found \"" + header.version + "\"");
+      c.fail("expected format version 4.1 or 2.2, found \"" + printable(header.version) + "\"");
     }
     const long long fileType = c.integer("the file type", 0, 1);
     c.integer("the data size", 8, 8);
@@ -287,6 +303,7 @@ struct Parse {
         const int ch = c.get();
         if (ch == '"') break;
         if (ch == EOF || ch == '\n' || ch == 0) c.fail("unterminated physical name");
+        if (ch < 32 || ch == 127) c.fail("a physical name holds a control character");
         if (name.size() >= 256) c.fail("a physical name is longer than 256 characters");
         name.push_back(static_cast<char>(ch));
       }
@@ -527,7 +544,9 @@ struct Parse {
       c.skipSpace();
       if (c.peek() == EOF) break;
       const std::string word = c.token("a section name", 64);
-      if (word.size() < 2 || word[0] != '$') c.fail("expected a $Section, found \"" + word + "\"");
+      if (word.size() < 2 || word[0] != '$') {
+        c.fail("expected a $Section, found \"" + printable(word) + "\"");
+      }
       const std::string name = word.substr(1);
       if (name != "MeshFormat" && !sawFormat) c.fail("the file must begin with $MeshFormat");
       if (name == "MeshFormat") {
@@ -554,7 +573,7 @@ struct Parse {
             "partitioned meshes are not supported: save the whole mesh (Mesh.PartitionOldStyle"
             " off, no -part), Peridot distributes it itself");
       } else if (name.rfind("End", 0) == 0) {
-        c.fail("\"" + word + "\" without its section");
+        c.fail("\"" + printable(word) + "\" without its section");
       } else {
         skipSection(name);
       }

@@ -10,12 +10,14 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "TempFile.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
+#include "deck/RunConfig.hpp"
 #include "discretization/Discretization.hpp"
 
 namespace peridot {
@@ -265,6 +267,33 @@ TEST(GmshMesh, LayersGrowBySurfaceDistance) {
             std::string::npos);
 }
 
+// The layer depth defaults to the largest block horizon; a varying horizon needs the key.
+TEST(GmshMesh, LayerDepthDefaultsToHorizon) {
+  const auto deck = [](const std::string& horizon2, const std::string& extra) {
+    return parseDeck(
+        "Peridigm:\n  Discretization:\n    Type: Gmsh\n    Input Mesh File: m.msh\n"
+        "    Node Set Layers: left\n" +
+            extra +
+            "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 1.0\n"
+            "      Bulk Modulus: 1.0\n      Shear Modulus: 1.0\n"
+            "  Blocks:\n    A:\n      Block Names: solid\n      Material: M\n      Horizon: 0.5\n"
+            "    B:\n      Block Names: block_2\n      Material: M\n      Horizon: \"" +
+            horizon2 +
+            "\"\n  Solver:\n    Final Time: 1.0\n    Verlet:\n      Safety Factor: 0.5\n",
+        "yaml");
+  };
+  EXPECT_DOUBLE_EQ(readRunConfig(*deck("0.75", "")).discretization.layerDepth, 0.75);
+  EXPECT_DOUBLE_EQ(
+      readRunConfig(*deck("0.75", "    Node Set Layer Depth: 0.2\n")).discretization.layerDepth,
+      0.2);
+  try {
+    readRunConfig(*deck("0.5 + 0.1 * x", ""));
+    ADD_FAILURE() << "no error for a varying horizon";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give Node Set Layer Depth"), std::string::npos);
+  }
+}
+
 // A 2D mesh: unit quads [0,1]x[0,1] and [1,2]x[0,1], the triangle (2,0) (3,0) (2,1), and the
 // physical line "bottom" from (0,0) to (1,0).
 std::string mesh2D(double zOfNode7 = 0.0) {
@@ -342,6 +371,41 @@ TEST(GmshMesh, BrokenFilesNameFileAndPlace) {
       EXPECT_NE(errorOf(text.substr(0, n)), "(no error)") << n;
     }
   }
+}
+
+// Mutated files (bytes overwritten, cut out, or replaced by extreme numbers; a fixed seed) give
+// a cloud or an InputError, never another exception, a crash or a hang.
+TEST(GmshMesh, MutatedFilesEndInACloudOrAnInputError) {
+  std::mt19937 random(12345);
+  const std::vector<std::string> inserts = {
+      "99999999999",     "-1", "0", "1e308", "nan", "\n", "$EndNodes\n", std::string(1, '\0'),
+      "\xff\xff\xff\x7f"};
+  int errors = 0, clouds = 0;
+  for (const std::string& text : {mesh22(), mesh41(), mesh22Binary(), mesh41Binary()}) {
+    for (int i = 0; i < 150; ++i) {
+      std::string m = text;
+      const std::size_t at = random() % m.size();
+      switch (random() % 3) {
+        case 0:
+          m[at] = static_cast<char>(random() % 256);
+          break;
+        case 1:
+          m.erase(at, 1 + random() % 16);
+          break;
+        default:
+          m.insert(at, inserts[random() % inserts.size()]);
+          break;
+      }
+      try {
+        readText(m, "    Node Set Layers: left\n    Node Set Layer Depth: 1\n");
+        ++clouds;
+      } catch (const InputError&) {
+        ++errors;
+      }
+    }
+  }
+  EXPECT_EQ(errors + clouds, 600);
+  EXPECT_GT(errors, 300);  // most mutations break the file
 }
 
 }  // namespace
