@@ -420,7 +420,7 @@ struct Parse {
   }
 
   void elements2() {
-    numElements = count2("the number of elements", bin() ? 16 : 8);
+    numElements = count2("the number of elements", 8);
     long long nodesOf[27];
     std::vector<int> physicals;
     GmshElement e;
