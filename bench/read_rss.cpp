@@ -1,7 +1,7 @@
 // Peak memory of the discretization stage alone: each rank calls buildPointCloud (or, with
 // --whole, the serial buildWholePointCloud every rank used to run) on an Exodus or text mesh and
 // rank 0 prints every rank's peak resident set size (getrusage ru_maxrss) before and after.
-// Usage: mpirun -np P bench_read_rss mesh.g [--text] [--whole]
+// Usage: mpirun -np P bench_read_rss mesh.g [--text | --gmsh] [--whole]
 #include <mpi.h>
 #include <sys/resource.h>
 
@@ -28,17 +28,18 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   if (argc < 2) {
-    if (rank == 0) std::fprintf(stderr, "usage: bench_read_rss mesh [--text] [--whole]\n");
+    if (rank == 0) std::fprintf(stderr, "usage: bench_read_rss mesh [--text | --gmsh] [--whole]\n");
     MPI_Finalize();
     return 2;
   }
-  bool text = false, whole = false;
+  bool text = false, whole = false, gmsh = false;
   for (int a = 2; a < argc; ++a) {
     text = text || std::strcmp(argv[a], "--text") == 0;
+    gmsh = gmsh || std::strcmp(argv[a], "--gmsh") == 0;
     whole = whole || std::strcmp(argv[a], "--whole") == 0;
   }
   peridot::DiscretizationConfig c;
-  c.type = text ? "Text File" : "Exodus";
+  c.type = text ? "Text File" : gmsh ? "Gmsh" : "Exodus";
   c.dimension = text ? 3 : 0;
   c.meshFile = argv[1];
   c.meshFilePath = "Discretization -> Input Mesh File";

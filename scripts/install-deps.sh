@@ -9,6 +9,7 @@ pkgs=(
   libtrilinos-pamgen-dev libptscotch-dev libscotch-dev
   libexodusii-dev libnetcdf-dev libopenmpi-dev openmpi-bin libboost-dev
   googletest libgtest-dev libbenchmark-dev netcdf-bin
+  gmsh python3-netcdf4 python3-numpy python3-matplotlib
 )
 missing=()
 for p in "${pkgs[@]}"; do

@@ -295,6 +295,22 @@ RestartConfig readRestart(ListReader& top, const Teuchos::ParameterList& deck) {
 
 }  // namespace
 
+// Gmsh node sets grown into layers: the depth defaults to the horizon (the largest of the blocks').
+static void setDefaultLayerDepth(RunConfig& config) {
+  DiscretizationConfig& d = config.discretization;
+  if (d.layerSets.empty() || d.layerDepth > 0) return;
+  for (const BlockGroupConfig& g : config.blocks) {
+    Expression horizon(g.horizon, {"x", "y", "z"}, g.path + " -> Horizon");
+    if (!horizon.isConstant()) {
+      throw InputError(d.layerSetsPath,
+                       "the layer depth defaults to the horizon, but the horizon "
+                       "of " +
+                           g.path + " varies; give Node Set Layer Depth");
+    }
+    d.layerDepth = std::max(d.layerDepth, horizon.evaluate(nullptr));
+  }
+}
+
 RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   RunConfig config;
   ListReader top(deck, "");
@@ -351,6 +367,7 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   }
   blocks.finish();
   if (config.blocks.empty()) throw InputError("Blocks", "no block group is defined");
+  setDefaultLayerDepth(config);
 
   if (top.has("Boundary Conditions"))
     readBoundaryConditions(top.sublist("Boundary Conditions"), config);

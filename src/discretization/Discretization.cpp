@@ -11,6 +11,7 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "discretization/DistributedExodusReader.hpp"
+#include "discretization/GmshReader.hpp"
 #include "discretization/Slicing.hpp"
 #include "discretization/TextMeshReader.hpp"
 
@@ -88,16 +89,16 @@ bool BondFilter::cuts(const double* p, const double* q) const {
 
 DiscretizationConfig readDiscretizationConfig(ListReader r) {
   DiscretizationConfig c;
-  c.type = r.choice("Type", {"Exodus", "Text File", "PdQuickGrid"});
+  c.type = r.choice("Type", {"Exodus", "Gmsh", "Text File", "PdQuickGrid"});
   if (r.has("Horizon")) {
     throw InputError(r.pathOf("Horizon"),
                      "the horizon belongs in the Blocks section (Blocks -> <group> -> Horizon)");
   }
-  if (c.type == "Exodus" || c.type == "Text File") {
+  if (c.type == "Exodus" || c.type == "Text File" || c.type == "Gmsh") {
     c.meshFile = r.string("Input Mesh File");
     c.meshFilePath = r.pathOf("Input Mesh File");
     if (c.meshFile.empty()) throw InputError(c.meshFilePath, "the file name is empty");
-    c.dimension = c.type == "Exodus" ? 0 : 3;
+    c.dimension = c.type == "Text File" ? 3 : 0;
   } else {
     const bool box = r.isSublist("TensorProduct3DMeshGenerator");
     const bool box2 = r.isSublist("TensorProduct2DMeshGenerator");
@@ -170,7 +171,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
                        "only for Text File discretizations; the dimension of " +
                            std::string(c.type == "Exodus"
                                            ? "an Exodus mesh is its own (num_dim and element types)"
-                                           : "PdQuickGrid is its generator's"));
+                                       : c.type == "Gmsh" ? "a Gmsh mesh is that of its cells"
+                                                          : "PdQuickGrid is its generator's"));
     }
     c.dimension = static_cast<int>(r.integer("Dimension"));
     if (c.dimension != 2 && c.dimension != 3) {
@@ -188,6 +190,29 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
                        "only for 2D discretizations (a TensorProduct2DMeshGenerator, a Text File "
                        "with Dimension: 2, or a planar Exodus mesh); this discretization is 3D");
     }
+  }
+  if (r.has("Node Set Layers") || r.has("Node Set Layer Depth")) {
+    const std::string key = r.has("Node Set Layers") ? "Node Set Layers" : "Node Set Layer Depth";
+    if (c.type != "Gmsh") {
+      throw InputError(r.pathOf(key), "only for Gmsh discretizations (Type: \"Gmsh\")");
+    }
+    c.layerSetsPath = r.pathOf("Node Set Layers");
+    // Comma-separated, since physical names may hold spaces.
+    std::string names = r.string("Node Set Layers");
+    std::size_t start = 0;
+    while (start <= names.size()) {
+      std::size_t comma = names.find(',', start);
+      if (comma == std::string::npos) comma = names.size();
+      std::string name = names.substr(start, comma - start);
+      name.erase(0, name.find_first_not_of(" \t"));
+      name.erase(name.find_last_not_of(" \t") + 1);
+      if (name.empty()) {
+        throw InputError(c.layerSetsPath, "expected physical group names separated by commas");
+      }
+      c.layerSets.push_back(name);
+      start = comma + 1;
+    }
+    if (r.has("Node Set Layer Depth")) c.layerDepth = r.positiveNumber("Node Set Layer Depth");
   }
   if (r.has("Omit Bonds Between Blocks")) {
     c.omitBondsBetweenBlocks = r.choice("Omit Bonds Between Blocks", {"None", "All"}) == "All";
@@ -386,6 +411,23 @@ PointCloud buildPointCloud(const DiscretizationConfig& c, MPI_Comm comm) {
       throw InputError(
           "Discretization -> Periodic Z",
           "the Exodus mesh \"" + c.meshFile + "\" is 2D: it has no z extent to repeat");
+    }
+    return cloud;
+  }
+  if (c.type == "Gmsh") {
+    GmshOptions options;
+    options.thickness = c.thickness;
+    options.layers = c.layerSets;
+    options.layerDepth = c.layerDepth;
+    options.layersPath = c.layerSetsPath;
+    PointCloud cloud = readGmshMeshShare(c.meshFile, c.meshFilePath, options, comm);
+    if (cloud.dimension == 3 && c.thicknessGiven) {
+      throw InputError(c.thicknessPath,
+                       "only for 2D discretizations; the Gmsh mesh \"" + c.meshFile + "\" is 3D");
+    }
+    if (cloud.dimension == 2 && c.periodic.periodic[2]) {
+      throw InputError("Discretization -> Periodic Z",
+                       "the Gmsh mesh \"" + c.meshFile + "\" is 2D: it has no z extent to repeat");
     }
     return cloud;
   }

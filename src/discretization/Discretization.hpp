@@ -50,7 +50,7 @@ struct NeighborhoodRule {
 };
 
 struct DiscretizationConfig {
-  std::string type;  // "Exodus", "Text File", "PdQuickGrid"
+  std::string type;  // "Exodus", "Gmsh", "Text File", "PdQuickGrid"
   std::string meshFile;
   std::string meshFilePath;  // deck path of the mesh file key, for messages
   enum class Generator {
@@ -77,6 +77,11 @@ struct DiscretizationConfig {
   bool partialVolumes = false;
   std::string generatorPath;
   PeriodicBox periodic;  // bonds across periodic faces reach the images of the points
+  // Gmsh: node sets grown into the layer of points within layerDepth of their group
+  // (`Node Set Layers`, `Node Set Layer Depth`; 0 until readRunConfig sets the horizon).
+  std::vector<std::string> layerSets;
+  double layerDepth = 0.0;
+  std::string layerSetsPath = "Discretization -> Node Set Layers";
 };
 
 // Validates the `Discretization` list (reads every key; unknown keys are errors).
