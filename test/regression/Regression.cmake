@@ -62,3 +62,7 @@ peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Pa
 # A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
                   Plate2D.e exact_2d.comp 600)
+# Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent
+# critical stretch: bitwise equal at 1-4 ranks.
+peridot_identical(ThermalCrack ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ThermalCrack
+                  ThermalCrack.yaml ThermalCrack.e exact_thermal.comp 0)
