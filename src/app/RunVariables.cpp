@@ -85,6 +85,9 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     if (s_.externalForceDensity) copy(s_.externalForceDensity);
   } else if (name == "Contact_Force_Density") {
     if (s_.contactForceDensity) copy(s_.contactForceDensity);
+  } else if (name == "Temperature" || name == "Temperature_Change") {
+    // Allocated (zero) only in runs with temperature conditions or thermal expansion.
+    if (s_.fields->hasNode(name)) copy(s_.fields->node(name, 1));
   } else if (name == "Damage") {
     s_.evaluator->nodeDamage(out.data());
   } else if (name == "Dilatation" || name == "Weighted_Volume" || name == "Lambda") {

@@ -1,6 +1,7 @@
 #include "app/Simulation.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -251,9 +252,27 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
           throw InputError(c.path + " -> Node Set", "node set \"" + kv.first + "\" is empty");
     }
   }
+  // Peridigm's node set FULL_DOMAIN (any case, spaces for underscores): every point.
+  for (const auto& c : config_.conditions) {
+    std::string tidy = c.nodeSet;
+    for (char& ch : tidy) ch = ch == ' ' ? '_' : static_cast<char>(std::toupper(ch));
+    if (tidy == "FULL_DOMAIN" && !nodeSets_.count(c.nodeSet)) {
+      std::vector<int> all(topology_.numOwned);
+      for (int i = 0; i < topology_.numOwned; ++i) all[i] = i;
+      nodeSets_[c.nodeSet] = all;
+    } else if (tidy == "ALL_SETS" && !nodeSets_.count(c.nodeSet)) {
+      throw InputError(c.path + " -> Node Set",
+                       "Peridigm's ALL_SETS (every node set in turn) is not supported yet");
+    }
+  }
   conditions_ = std::make_unique<BoundaryConditions>(
       config_.conditions, nodeSets_, x_, topology_.overlapGlobalId.data(), volume_, comm_);
   if (conditions_->hasBodyForce()) b_ = fields_->node("External_Force_Density", 3);
+  if (conditions_->hasTemperature()) {
+    temperature_ = fields_->node("Temperature", 1);
+    temperatureChange_ = fields_->node("Temperature_Change", 1);
+    evaluator_->setThermal(temperatureChange_);
+  }
 
   if (config_.contact.enabled && config_.discretization.periodic.any()) {
     throw InputError(config_.contact.path, "contact with periodic boundaries is not supported yet");
@@ -273,6 +292,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     fc_ = fields_->node("Contact_Force_Density", 3);
     contact_ = std::make_unique<ShortRangeContact>(config_.contact, topology_, blockName, horizon,
                                                    volume_, timers_);
+    if (config_.contact.timeDependentFriction) {
+      friction_ =
+          std::make_unique<Expression>(config_.contact.frictionExpression,
+                                       std::vector<std::string>{"t"}, config_.contact.frictionPath);
+    }
   }
   checkVariables();
   RunVariables::Sources sources;
@@ -293,6 +317,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   // Initial conditions now, so that a bad value stops the run before any file is written.
   time_ = config_.solver.initialTime;
   throwIfAnyRank(conditions_->applyInitial(time_, u_, v_), comm_);
+  if (conditions_->hasTemperature()) {  // not the pointer: null on a rank without points
+    throwIfAnyRank(conditions_->applyInitialTemperature(time_, temperature_), comm_);
+    throwIfAnyRank(conditions_->applyPrescribedTemperature(time_, temperature_, temperatureChange_),
+                   comm_);
+  }
 
   estimateStableTimeStep();
   const auto& s = config_.solver;
@@ -435,7 +464,20 @@ void Simulation::reportMemory(std::ostream& out) {
 
 void Simulation::evaluateForces(long long step) {
   if (contact_ && step == 0) searchContact();
+  evaluator_->setTime(time_);
   evaluator_->evaluate(dt_);
+  if (friction_) {
+    // The same value on every rank (it depends on the time alone).
+    const double mu = friction_->evaluate(&time_);
+    if (!(mu >= 0.0) || !std::isfinite(mu)) {
+      RunError error(config_.contact.frictionPath +
+                     ": the friction coefficient at t = " + formatNumber(time_) + " is " +
+                     formatNumber(mu) + "; it must be a finite number >= 0");
+      error.markCollective();
+      throw error;
+    }
+    contact_->setFrictionCoefficient(mu);
+  }
   if (contact_) contact_->computeForce(y_, v_, fc_);
 }
 
@@ -469,7 +511,9 @@ void Simulation::checkFinite(long long step, double time) {
           << formatNumber(stableDt_) << ")";
     }
   }
-  throwIfAnyRank(msg.str(), comm_, true);
+  std::string message = msg.str();
+  if (message.empty()) message = temperatureProblem_;
+  throwIfAnyRank(message, comm_, true);
 }
 
 void Simulation::run() {
@@ -548,6 +592,9 @@ void Simulation::run() {
       Timers::Scope t(timers_, "Boundary conditions");
       conditions_->applyPrescribedVelocity(next, dt_, v_);
       if (b_) conditions_->applyBodyForce(next, b_, topology_.numOwned);
+      if (conditions_->hasTemperature())
+        temperatureProblem_ =
+            conditions_->applyPrescribedTemperature(next, temperature_, temperatureChange_);
     }
     {
       Timers::Scope t(timers_, "Integration");

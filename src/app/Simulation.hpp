@@ -12,6 +12,7 @@
 #include "bc/Conditions.hpp"
 #include "contact/ShortRangeContact.hpp"
 #include "core/Timers.hpp"
+#include "deck/Expression.hpp"
 #include "deck/RunConfig.hpp"
 #include "discretization/PointCloud.hpp"
 #include "evaluator/ModelEvaluator.hpp"
@@ -108,6 +109,12 @@ class Simulation {
   long long lastStep_ = 0;   // the last step completed
   bool resumed_ = false, stopped_ = false;
   int stopSignal_ = 0;
+  // Temperature conditions: owned Temperature and Temperature_Change (null without them), and
+  // the first non-finite prescribed temperature of the last step (reported with checkFinite).
+  double *temperature_ = nullptr, *temperatureChange_ = nullptr;
+  std::string temperatureProblem_;
+  // "Time Dependent Short Range Force": the friction coefficient as an expression in t.
+  std::unique_ptr<Expression> friction_;
   double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr, *f_ = nullptr,
          *b_ = nullptr, *volume_ = nullptr, *fc_ = nullptr;
 };

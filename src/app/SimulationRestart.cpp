@@ -52,6 +52,9 @@ void Simulation::resume() {
   time_ = clock.time;
   resumed_ = true;
   conditions_->resume(time_);
+  // Temperatures are functions of the time alone (no conduction): set, not saved.
+  if (conditions_->hasTemperature())
+    conditions_->applyPrescribedTemperature(time_, temperature_, temperatureChange_);
   for (auto& b : blocks_)
     if (b.damage) b.damage->resume();
   if (contact_) {

@@ -24,6 +24,12 @@ BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& condi
                                            cc.path + " -> Value");
     c.points = it->second;
     if (cc.kind == ConditionConfig::Kind::BodyForce) hasBodyForce_ = true;
+    if (cc.isTemperature()) hasTemperature_ = true;
+    if (cc.kind == ConditionConfig::Kind::PrescribedTemperature) {
+      // The reference of the temperature change: the value at t = 0 (Peridigm's choice, whatever
+      // the Initial Time).
+      for (int p : c.points) c.previous.push_back(evaluate(c, p, 0.0));
+    }
     if (cc.kind == ConditionConfig::Kind::Traction) {
       hasBodyForce_ = true;
       double local = 0, layer = 0;
@@ -95,6 +101,43 @@ void BoundaryConditions::applyPrescribedVelocity(double tNext, double dt, double
       c.previous[k] = next;
     }
   }
+}
+
+std::string BoundaryConditions::nonFinite(const Condition& c, int p, double value) const {
+  return c.config.path + " -> Value: the expression gives " + std::to_string(value) + " at point " +
+         std::to_string(pointIds_[p] + 1) + " (x = " + std::to_string(x_[3 * p]) +
+         ", y = " + std::to_string(x_[3 * p + 1]) + ", z = " + std::to_string(x_[3 * p + 2]) + ")";
+}
+
+std::string BoundaryConditions::applyInitialTemperature(double t0, double* temperature) {
+  std::string message;
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::InitialTemperature) continue;
+    for (int p : c.points) {
+      temperature[p] = evaluate(c, p, t0);
+      if (!std::isfinite(temperature[p]) && message.empty())
+        message = nonFinite(c, p, temperature[p]);
+    }
+  }
+  return message;
+}
+
+std::string BoundaryConditions::applyPrescribedTemperature(double t, double* temperature,
+                                                           double* change) {
+  std::string message;
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::PrescribedTemperature) continue;
+    const bool constant = !c.value->usesVariable("t");
+    for (std::size_t k = 0; k < c.points.size(); ++k) {
+      const int p = c.points[k];
+      // Constant in time: f(t) = f(0) and no change, without evaluating again.
+      const double value = constant ? c.previous[k] : evaluate(c, p, t);
+      temperature[p] = value;
+      change[p] = value - c.previous[k];
+      if (!std::isfinite(value) && message.empty()) message = nonFinite(c, p, value);
+    }
+  }
+  return message;
 }
 
 void BoundaryConditions::applyBodyForce(double t, double* b, int numOwned) {

@@ -37,6 +37,13 @@ class BoundaryConditions {
   void applyBodyForce(double t, double* externalForceDensity, int numOwned);
 
   bool hasBodyForce() const { return hasBodyForce_; }
+  bool hasTemperature() const { return hasTemperature_; }
+  // Temperature conditions (Peridigm's): Initial Temperature sets the temperature at t0 and
+  // leaves the temperature change 0; Prescribed Temperature sets, at each time t, the
+  // temperature f(t) and the change f(t) - f(0) (measured from t = 0, as Peridigm). Both return
+  // a message naming the condition and point where a value is not finite (empty if none).
+  std::string applyInitialTemperature(double t0, double* temperature);
+  std::string applyPrescribedTemperature(double t, double* temperature, double* change);
   // Points with a prescribed component, for reaction output and checks.
   std::size_t numExpressionEvaluations() const { return evaluations_; }
 
@@ -45,14 +52,16 @@ class BoundaryConditions {
     ConditionConfig config;
     std::unique_ptr<Expression> value;
     std::vector<int> points;
-    std::vector<double> previous;  // prescribed displacement: u at the previous step
+    std::vector<double> previous;  // prescribed displacement: u at the previous step;
+                                   // prescribed temperature: f(0) of each point
     double scale = 1.0;            // traction: surface area / layer volume
   };
   double evaluate(Condition& c, int point, double t);
   const double* x_;
   const long long* pointIds_ = nullptr;
   std::vector<Condition> conditions_;
-  bool hasBodyForce_ = false;
+  std::string nonFinite(const Condition& c, int point, double value) const;
+  bool hasBodyForce_ = false, hasTemperature_ = false;
   std::size_t evaluations_ = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "deck/Expression.hpp"
 
 namespace peridot {
 
@@ -26,10 +27,20 @@ ContactConfig readContactConfig(ListReader c) {
   }
   cc.modelName = names[0];
   ListReader m = models.sublist(cc.modelName);
-  m.choice("Contact Model", {"Short Range Force"});
+  const std::string kind =
+      m.choice("Contact Model", {"Short Range Force", "Time Dependent Short Range Force"});
   cc.contactRadius = m.positiveNumber("Contact Radius");
   cc.springConstant = m.positiveNumber("Spring Constant");
-  cc.frictionCoefficient = m.nonNegativeNumber("Friction Coefficient", 0.0);
+  if (kind == "Time Dependent Short Range Force") {
+    // Peridigm requires the key for this model; its value is an expression in t.
+    cc.timeDependentFriction = true;
+    cc.frictionPath = m.pathOf("Friction Coefficient");
+    cc.frictionExpression = m.numberOrExpression("Friction Coefficient");
+    Expression check(cc.frictionExpression, {"t"}, cc.frictionPath);
+    (void)check;
+  } else {
+    cc.frictionCoefficient = m.nonNegativeNumber("Friction Coefficient", 0.0);
+  }
   m.finish();
   models.finish();
   if (cc.contactRadius > cc.searchRadius) {

@@ -15,6 +15,10 @@ struct ContactConfig {
   long long searchFrequency = 1;
   std::string modelName;
   double contactRadius = 0, springConstant = 0, frictionCoefficient = 0;
+  // "Time Dependent Short Range Force": the friction coefficient is this expression in t,
+  // evaluated at the time of each force evaluation (frictionCoefficient then holds its value).
+  bool timeDependentFriction = false;
+  std::string frictionExpression, frictionPath;
   bool generalContact = false;                          // every pair of points, any blocks
   std::set<std::pair<std::string, std::string>> pairs;  // block-name pairs (sorted) otherwise
   std::string path;

@@ -33,6 +33,8 @@ class ShortRangeContact {
   std::vector<std::vector<long long>> contactListIds() const;
   // Contact force density of the owned points (collective: refreshes contact ghosts).
   void computeForce(const double* y, const double* v, double* contactForce);
+  // The friction coefficient of the next evaluations (a time-dependent model's value at t).
+  void setFrictionCoefficient(double mu) { config_.frictionCoefficient = mu; }
 
  private:
   void refresh(const double* owned, std::vector<double>& ghost);

@@ -7,11 +7,42 @@
 
 namespace peridot {
 
-CriticalStretch::CriticalStretch(ListReader& p) : criticalStretch_(p) {
-  if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
-    throw InputError(p.pathOf("Thermal Expansion Coefficient"),
-                     "thermal strains are not supported by Peridot yet");
+namespace {
+
+template <bool kThermal>
+void breakLoop(const ModelState& s, const std::vector<int>& points, double sc, double alpha,
+               float* bondDamage) {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* y = s.y;
+  const double* zeta = s.bondLength;
+  for (int i : points) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double thermal = kThermal ? alpha * s.temperatureChange[i] : 0.0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+      double length = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      if (kThermal) length -= thermal * zeta[b];
+      const double stretch = (length - zeta[b]) / zeta[b];
+      // max() keeps a broken bond broken without a branch the compiler cannot vectorize.
+      bondDamage[b] = stretch > sc ? 1.0f : bondDamage[b];
+    }
   }
+}
+
+}  // namespace
+
+void breakStretchedBonds(const ModelState& s, const std::vector<int>& points,
+                         double criticalStretch, double alpha, float* bondDamage) {
+  if (alpha != 0.0 && s.temperatureChange)
+    breakLoop<true>(s, points, criticalStretch, alpha, bondDamage);
+  else
+    breakLoop<false>(s, points, criticalStretch, 0.0, bondDamage);
+}
+
+CriticalStretch::CriticalStretch(ListReader& p) : criticalStretch_(p) {
+  alpha_ = p.number("Thermal Expansion Coefficient", 0.0);
   p.boolean("Verbose", false);
 }
 
@@ -22,21 +53,7 @@ void CriticalStretch::bind(const MaterialModel& material, double horizon,
 
 void CriticalStretch::computeDamage(const ModelState& s, const std::vector<int>& points,
                                     float* bondDamage) {
-  const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* y = s.y;
-  const double* zeta = s.bondLength;
-  const double sc = criticalStretch_.value();
-  for (int i : points) {
-    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
-      // max() keeps a broken bond broken without a branch the compiler cannot vectorize.
-      bondDamage[b] = stretch > sc ? 1.0f : bondDamage[b];
-    }
-  }
+  breakStretchedBonds(s, points, criticalStretch_.value(), alpha_, bondDamage);
 }
 
 PERIDOT_REGISTER_DAMAGE(
@@ -48,7 +65,9 @@ PERIDOT_REGISTER_DAMAGE(
          "positive number: G0, from which s_c is derived per block from its "
          "material, dimension and influence function (3D PMB: "
          "sqrt(5 G0 / (9 K delta)); see doc/theory/planar-and-fracture-energy.md)"},
-        {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
+        {"Thermal Expansion Coefficient",
+         "number, default 0: alpha; the stretch compared with s_c is taken from the length "
+         "less alpha Delta T_i |xi| (Delta T_i of the list's owner, as Peridigm)"},
         {"Verbose", "bool, default false"}}))
 
 }  // namespace peridot

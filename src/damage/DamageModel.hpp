@@ -16,6 +16,10 @@ class DamageModel {
   virtual ~DamageModel() = default;
   virtual void computeDamage(const ModelState& state, const std::vector<int>& points,
                              float* bondDamage) = 0;
+  // Called once at set-up, after the bond damage is allocated (zero) and before the first
+  // evaluation: models that start with broken bonds (`Initial Damage`) set them here.
+  virtual void initializeDamage(const ModelState& /*state*/, const std::vector<int>& /*points*/,
+                                float* /*bondDamage*/) {}
   // Models whose parameters depend on the block (material, horizon) get one instance per block
   // and are bound to it before the run; `log` receives what was derived (rank 0 prints it).
   virtual bool bindsToBlock() const { return false; }

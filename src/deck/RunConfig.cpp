@@ -70,19 +70,29 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
     } else if (t == "traction") {
       cc.kind = ConditionConfig::Kind::Traction;
       cc.surfaceArea = c.positiveNumber("Surface Area");
-    } else if (t == "prescribedtemperature" || t == "initialtemperature" || t == "thermalflux" ||
-               t == "prescribedfluidpressureu" || t == "initialfluidpressureu") {
+    } else if (t == "prescribedtemperature") {
+      cc.kind = ConditionConfig::Kind::PrescribedTemperature;
+    } else if (t == "initialtemperature") {
+      cc.kind = ConditionConfig::Kind::InitialTemperature;
+    } else if (t == "thermalflux" || t == "prescribedfluidpressureu" ||
+               t == "initialfluidpressureu") {
       throw InputError(c.pathOf("Type"),
                        "\"" + type + "\" conditions are not supported by Peridot yet");
     } else {
       throw InputError(c.pathOf("Type"),
                        "unknown condition type \"" + type +
                            "\"; expected \"Initial Displacement\", \"Initial Velocity\", "
-                           "\"Prescribed Displacement\", \"Body Force\" or \"Traction\"");
+                           "\"Prescribed Displacement\", \"Body Force\", \"Traction\", "
+                           "\"Prescribed Temperature\" or \"Initial Temperature\"");
     }
     cc.nodeSet = c.string("Node Set");
-    const std::string coordinate = c.choice("Coordinate", {"x", "y", "z", "X", "Y", "Z"});
-    cc.coordinate = std::tolower(static_cast<unsigned char>(coordinate[0])) - 'x';
+    if (cc.isTemperature()) {
+      // A scalar field: Peridigm allows the coordinate x or none.
+      if (c.has("Coordinate")) c.choice("Coordinate", {"x", "X"});
+    } else {
+      const std::string coordinate = c.choice("Coordinate", {"x", "y", "z", "X", "Y", "Z"});
+      cc.coordinate = std::tolower(static_cast<unsigned char>(coordinate[0])) - 'x';
+    }
     cc.value = c.numberOrExpression("Value");
     Expression check(cc.value, kXYZT, c.pathOf("Value"));
     (void)check;
@@ -215,6 +225,9 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},
+      {"Temperature", 1, "temperature (Initial / Prescribed Temperature conditions; 0 elsewhere)"},
+      {"Temperature_Change", 1,
+       "temperature change Delta T = f(t) - f(0) of Prescribed Temperature (thermal strains)"},
       {"Global_Kinetic_Energy", 0, "sum of Kinetic_Energy (global variable)"},
       {"Global_Stored_Elastic_Energy", 0, "sum of Stored_Elastic_Energy (global variable)"},
   };

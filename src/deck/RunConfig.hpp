@@ -33,11 +33,16 @@ struct ConditionConfig {
     InitialVelocity,
     PrescribedDisplacement,
     BodyForce,
-    Traction  // a traction on a surface, applied as a body force over the node set's layer
+    Traction,  // a traction on a surface, applied as a body force over the node set's layer
+    PrescribedTemperature,  // Temperature = f(t), Temperature_Change = f(t) - f(0) (Peridigm)
+    InitialTemperature      // Temperature = f(t0); the temperature change stays 0
   };
+  bool isTemperature() const {
+    return kind == Kind::PrescribedTemperature || kind == Kind::InitialTemperature;
+  }
   Kind kind = Kind::InitialVelocity;
   std::string name, path, nodeSet;
-  int coordinate = 0;      // 0, 1, 2
+  int coordinate = 0;      // 0, 1, 2 (0 for the scalar temperature conditions)
   std::string value;       // expression in x, y, z, t
   double surfaceArea = 0;  // Traction: area of the loaded surface
 };

@@ -29,10 +29,19 @@ void readVector3(ListReader& r, const std::string& prefix, double* out, bool req
   }
 }
 
+}  // namespace
+
 BondFilter readBondFilter(ListReader r, const std::string& name) {
   BondFilter f;
   f.name = name;
-  const std::string type = r.choice("Type", {"Rectangular_Plane", "Disk"});
+  const std::string type = r.choice("Type", {"Rectangular_Plane", "Disk", "Exodus Mesh"});
+  if (type == "Exodus Mesh") {
+    f.kind = BondFilter::Kind::ExodusMesh;
+    const std::string file = r.string("File Name");
+    f.facets = std::make_shared<FacetMesh>(FacetMesh::read(file, r.pathOf("File Name")));
+    r.finish();
+    return f;
+  }
   if (type == "Rectangular_Plane") {
     f.kind = BondFilter::Kind::RectangularPlane;
     readVector3(r, "Normal_", f.normal, true);
@@ -61,9 +70,8 @@ BondFilter readBondFilter(ListReader r, const std::string& name) {
   return f;
 }
 
-}  // namespace
-
 bool BondFilter::cuts(const double* p, const double* q) const {
+  if (kind == Kind::ExodusMesh) return facets->cuts(p, q);
   const double* origin = kind == Kind::Disk ? center : lowerLeftCorner;
   const double dp = (p[0] - origin[0]) * normal[0] + (p[1] - origin[1]) * normal[1] +
                     (p[2] - origin[2]) * normal[2];

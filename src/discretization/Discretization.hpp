@@ -3,17 +3,20 @@
 // PdQuickGrid tensor-product generators) plus the neighbourhood rule that goes with it.
 #include <mpi.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "deck/Deck.hpp"
+#include "discretization/FacetMesh.hpp"
 #include "discretization/PointCloud.hpp"
 
 namespace peridot {
 
-// Bond filters cut bonds whose segment crosses a surface (pre-cracks).
+// Bond filters cut bonds whose segment crosses a surface (pre-cracks): a finite rectangle, a
+// disk, or a shell mesh of triangles and quads read from an Exodus file (`Exodus Mesh`).
 struct BondFilter {
-  enum class Kind { RectangularPlane, Disk };
+  enum class Kind { RectangularPlane, Disk, ExodusMesh };
   Kind kind = Kind::RectangularPlane;
   std::string name;
   double normal[3] = {0, 0, 1};
@@ -22,6 +25,7 @@ struct BondFilter {
   double bottomLength = 0.0, sideLength = 0.0;
   double center[3] = {0, 0, 0};
   double radius = 0.0;
+  std::shared_ptr<const FacetMesh> facets;  // ExodusMesh: shared by the copies of the config
   // True if the segment p -> q crosses the filter surface.
   bool cuts(const double* p, const double* q) const;
 };
@@ -83,6 +87,10 @@ struct DiscretizationConfig {
   double layerDepth = 0.0;
   std::string layerSetsPath = "Discretization -> Node Set Layers";
 };
+
+// One filter of a `Bond Filters` list (also read by the `Initial Damage` damage model): Type
+// `Rectangular_Plane`, `Disk` or `Exodus Mesh` (`File Name`, read here, whole, on every rank).
+BondFilter readBondFilter(ListReader filter, const std::string& name);
 
 // Validates the `Discretization` list (reads every key; unknown keys are errors).
 DiscretizationConfig readDiscretizationConfig(ListReader discretization);

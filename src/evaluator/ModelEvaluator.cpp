@@ -126,8 +126,11 @@ void ModelEvaluator::initialize() {
   bool anyDamage = false;
   for (const auto& b : blocks_) anyDamage = anyDamage || b.damage != nullptr;
   if (anyDamage) {
+    hasDamage_ = true;
     bondDamage_ = fields_.bondFloat("Bond_Damage").data();
     state_.bondDamage = bondDamage_;
+    for (auto& b : blocks_)
+      if (b.damage) b.damage->initializeDamage(state_, b.points, bondDamage_);
   }
 
   // Bonds may only join points whose models can read each other's per-point state.
@@ -168,13 +171,43 @@ void ModelEvaluator::initialize() {
   syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
 }
 
+void ModelEvaluator::setThermal(const double* temperatureChange) {
+  state_.temperatureChange = temperatureChange;
+  bool expands = false;
+  for (const auto& b : blocks_) expands = expands || b.material->thermalExpansionCoefficient() != 0;
+  for (const auto& b : blocks_) {
+    // A smooth law would need each end's F(s - alpha Delta T): not there yet.
+    if (expands && b.damage && b.damage->bondLaw().kind != BondLaw::Kind::Linear) {
+      throw InputError("Blocks -> " + b.name,
+                       "thermal strains with the smooth force law of the damage model \"" +
+                           b.damageName + "\" are not supported yet");
+    }
+  }
+  // Without expanding materials nothing reads the strain (damage models read Delta T only).
+  state_.thermalStrain = expands ? fields_.node(kThermalStrain, 1) : nullptr;
+  thermal_ = expands;  // the pointer is null on a rank without points
+}
+
 void ModelEvaluator::evaluate(double dt, bool updateDamage) {
   state_.dt = dt;
   {
     Timers::Scope t(timers_, "Ghost exchange");
     fields_.refreshGhosts("Coordinates");
+    if (thermal_) {
+      // alpha of each point's own material: across a bond between blocks each end expands as
+      // its material does.
+      double* strain = fields_.node(kThermalStrain, 1);
+      for (const auto& b : blocks_) {
+        const double alpha = b.material->thermalExpansionCoefficient();
+        for (int i : b.points) strain[i] = alpha * state_.temperatureChange[i];
+      }
+      fields_.refreshGhosts(kThermalStrain);
+    }
   }
-  if (bondDamage_ && updateDamage) {
+  // On every rank alike, also one without bonds (bondDamage_ null there): the timer names must
+  // be the same on all ranks for their reduction at the end, and a damage model may stop the
+  // run collectively.
+  if (hasDamage_ && updateDamage) {
     Timers::Scope t(timers_, "Damage");
     for (auto& b : blocks_)
       if (b.damage && !fusesCriticalStretch(b))

@@ -38,6 +38,14 @@ class ModelEvaluator {
   // (owned values; ghosts are refreshed here). With `updateDamage` false no bond breaks (the
   // linearized stiffness is probed this way).
   void evaluate(double dt, bool updateDamage = true);
+  // Thermal loading (after initialize): `temperatureChange` is the owned Delta T the run's
+  // temperature conditions maintain. Materials with a thermal expansion coefficient then see the
+  // thermal strain alpha Delta T of every point (own and ghost), refreshed at each evaluation;
+  // damage models read Delta T of the owned points.
+  void setThermal(const double* temperatureChange);
+  static constexpr const char* kThermalStrain = "Thermal_Strain";
+  // The time of the next evaluations (time-dependent damage laws read it).
+  void setTime(double t) { state_.time = t; }
 
   const ModelState& state() const { return state_; }
   // Fraction of broken bonds per owned point (0 where no damage model or no bonds).
@@ -54,7 +62,9 @@ class ModelEvaluator {
   ModelState state_;
   bool fusesCriticalStretch(const Block& b) const;
 
-  float* bondDamage_ = nullptr;
+  float* bondDamage_ = nullptr;  // null on a rank without bonds
+  bool hasDamage_ = false;         // some block has a damage model (the same on every rank)
+  bool thermal_ = false;           // some block's material expands (the same on every rank)
   bool fuseCriticalStretch_ = true;
   bool partialVolumes_ = false;
   std::vector<std::string> syncAfterPrecompute_;

@@ -21,8 +21,11 @@
 
 namespace peridot {
 
+// kThermal (linear law only): each end's half of the pair force is taken from its stretch less
+// its own thermal strain alpha Delta T (state.thermalStrain), the convention of Peridigm's LPS:
+// (c_i (s - eps_i) + c_j (s - eps_j)) / 2 in place of c2 s / 2.
 template <bool kDamage, bool kSides, bool kOverLength, bool kInfluence, bool kSmooth,
-          bool kBreak = false>
+          bool kBreak = false, bool kThermal = false>
 void pairForceLoop(const ModelState& s, const std::vector<int>& points, const double* c) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
@@ -35,24 +38,34 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
   const unsigned char* sides = s.bondSides;
   const double* influence = s.influence;
   const BondLaw law = s.bondLaw;
+  const double* strain = s.thermalStrain;
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double ci = c[i], yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double strainI = kThermal ? strain[i] : 0.0;
 #pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       double c2 = kSides ? ci * (sides[b] & 1) + c[j] * ((sides[b] >> 1) & 1) : ci + c[j];
+      // The ends' thermal part c_i eps_i + c_j eps_j, scaled as c2 is below.
+      double th = 0.0;
+      if constexpr (kThermal)
+        th = kSides ? ci * (sides[b] & 1) * strainI + c[j] * ((sides[b] >> 1) & 1) * strain[j]
+                    : ci * strainI + c[j] * strain[j];
       if constexpr (kBreak) {
         const bool breaks = (dY - zeta[b]) / zeta[b] > criticalStretch;
         const float d = breaks ? 1.0f : breakable[b];
         if (breaks) breakable[b] = 1.0f;  // a masked store: intact bonds' lines stay clean
         c2 *= 1.0 - d;
+        if constexpr (kThermal) th *= 1.0 - d;
       } else if (kDamage) {
         c2 *= 1.0 - damage[b];
+        if constexpr (kThermal) th *= 1.0 - damage[b];
       }
       if (kInfluence) c2 *= influence[b];
+      if (kThermal && kInfluence) th *= influence[b];
       double scale;
       if constexpr (kSmooth) {
         // (c2 / 2) F(s) V_j / |Y| (normalized: also / |xi|).
@@ -66,7 +79,9 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
         const double safe = dY > 0 ? dY : 1.0;
         const double denominator =
             kOverLength ? 2.0 * zeta[b] * zeta[b] * safe : 2.0 * zeta[b] * safe;
-        const double q = c2 * (dY - zeta[b]) * volume[j] / denominator;
+        const double extension =
+            kThermal ? c2 * (dY - zeta[b]) - th * zeta[b] : c2 * (dY - zeta[b]);
+        const double q = extension * volume[j] / denominator;
         scale = dY > 0 ? q : 0.0;
       }
       f0 += scale * Y0;
@@ -81,6 +96,14 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
 
 template <bool kOverLength, bool kDamage, bool kSides, bool kInfluence>
 void pairForceWithLaw(const ModelState& s, const std::vector<int>& points, const double* c) {
+  // Thermal strains come with the linear law only (a smooth law is refused at set-up).
+  if (s.thermalStrain && s.bondLaw.kind == BondLaw::Kind::Linear) {
+    if (kDamage && s.breakableBondDamage)
+      pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false, true, true>(s, points, c);
+    else
+      pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false, false, true>(s, points, c);
+    return;
+  }
   if (kDamage && s.breakableBondDamage && s.bondLaw.kind == BondLaw::Kind::Linear)
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false, true>(s, points, c);
   else if (s.bondLaw.kind == BondLaw::Kind::Smooth)
@@ -115,6 +138,13 @@ void pairEnergyDensity(const ModelState& s, const std::vector<int>& points, cons
       // 1/4 c2 p(s), p = s^2/2 for the linear law (kept as 1/8 c2 s^2, the same bits as before).
       double wb = smooth ? 0.25 * c2 * s.bondLaw.potential(stretch) * (kOverLength ? 1.0 : zeta)
                          : 0.125 * c2 * stretch * stretch * (kOverLength ? 1.0 : zeta);
+      if (s.thermalStrain && !smooth) {
+        // Each end's half from its own elastic stretch s - eps.
+        const double wi = s.bondSides ? c[i] * (s.bondSides[b] & 1) : c[i];
+        const double wj = s.bondSides ? c[j] * ((s.bondSides[b] >> 1) & 1) : c[j];
+        const double si = stretch - s.thermalStrain[i], sj = stretch - s.thermalStrain[j];
+        wb = 0.125 * (wi * si * si + wj * sj * sj) * (kOverLength ? 1.0 : zeta);
+      }
       if (s.influence) wb *= s.influence[b];
       if (s.bondDamage) wb *= 1.0 - s.bondDamage[b];
       w += wb * s.volume[j];

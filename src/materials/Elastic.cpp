@@ -33,6 +33,7 @@ Elastic::Elastic(ListReader& p) {
   mode_ = readPlaneMode(p);
   constants_ = readTwoElasticConstants(p);
   shearCorrection_ = p.boolean("Apply Shear Correction Factor", false);
+  thermalExpansion_ = p.number("Thermal Expansion Coefficient", 0.0);
   if (mode_ != PlaneMode::ThreeD) {
     // The dilatation is the 3D volumetric strain (Le, Chan and Schwartz 2014): in plane stress
     // eps_zz = -nu/(1-nu) tr eps_2D, so theta = r tr eps_2D with r = (1-2nu)/(1-nu); in plane
@@ -46,7 +47,7 @@ Elastic::Elastic(ListReader& p) {
   } else {
     dilatationModulus_ = constants_.bulkModulus;
   }
-  acceptCommonMaterialKeys(p, true);
+  acceptCommonMaterialKeys(p, true, true);
 }
 
 void Elastic::declareFields(FieldManager& fields) {
@@ -90,11 +91,14 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
-    dilatationLoop<O::influence, O::damage, O::sides>(s, points);
+    if (s.thermalStrain)
+      dilatationLoop<O::influence, O::damage, O::sides, true>(s, points);
+    else
+      dilatationLoop<O::influence, O::damage, O::sides, false>(s, points);
   });
 }
 
-template <bool kInfluence, bool kDamage, bool kSides>
+template <bool kInfluence, bool kDamage, bool kSides, bool kThermal>
 void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
@@ -102,6 +106,7 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
     double theta = 0;
     const double m = weightedVolume_[i];
     const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
+    const double strainI = kThermal ? s.thermalStrain[i] : 0.0;
 #pragma omp simd reduction(+ : theta)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
@@ -111,7 +116,9 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
       const double omega = kInfluence ? s.influence[b] : 1.0;
       const double intact = kDamage ? 1.0 - s.bondDamage[b] : 1.0;
       const double own = kSides ? (s.bondSides[b] & 1) : 1.0;  // adds +0 where not own
-      theta += own * (thetaFactor_ * omega * intact * zeta * (dY - zeta) * s.volume[j] / m);
+      double e = dY - zeta;
+      if (kThermal) e -= strainI * zeta;
+      theta += own * (thetaFactor_ * omega * intact * zeta * e * s.volume[j] / m);
     }
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
@@ -120,18 +127,21 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
 
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
   const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
+  const bool thermal = s.thermalStrain != nullptr;
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
-    if (smooth)
-      forceLoop<true, O::influence, O::damage, O::sides>(s, points);
+    if (smooth)  // thermal strains with a smooth law are refused at set-up
+      forceLoop<true, O::influence, O::damage, O::sides, false>(s, points);
+    else if (thermal)
+      forceLoop<false, O::influence, O::damage, O::sides, true>(s, points);
     else
-      forceLoop<false, O::influence, O::damage, O::sides>(s, points);
+      forceLoop<false, O::influence, O::damage, O::sides, false>(s, points);
   });
 }
 
 // kSmooth: LPS-T (paper 001 eq. 15), t = (1 - d) omega zeta (beta theta + alpha F(s)), with the
 // dilatation of the surviving bond parts (precompute). Otherwise Peridigm's LPS, as it was.
-template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides>
+template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides, bool kThermal>
 void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) const {
   const BondLaw law = s.bondLaw;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
@@ -148,6 +158,8 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     const double thetaBetaI = theta[i] * beta[i], alphaI = alpha[i];
+    const double* strain = s.thermalStrain;
+    const double strainI = kThermal ? strain[i] : 0.0;
 #pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
@@ -166,6 +178,13 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
         const double F = law.forceScalar(e / zeta[b]);
         ti = intact * omega * zeta[b] * (thetaBetaI + alphaI * F);
         tj = intact * omega * zeta[b] * (theta[j] * beta[j] + alpha[j] * F);
+      } else if constexpr (kThermal) {
+        // Each end's extension less its own thermal part (Peridigm: e -= alpha Delta T zeta).
+        double ei = e, ej = e;
+        ei -= strainI * zeta[b];
+        ej -= strain[j] * zeta[b];
+        ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * ei);
+        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * ej);
       } else {
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
         tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
@@ -203,7 +222,8 @@ void Elastic::storedEnergyDensity(const ModelState& s, const std::vector<int>& p
       const int j = neighbors[b];
       const Bond g = bondGeometry(s.x, s.y, i, j);
       if (!s.topology->ownSide(b)) continue;
-      const double ed = g.dY - g.zeta - dilatation_[i] * g.zeta / thetaFactor_;
+      const double thermal = s.thermalStrain ? s.thermalStrain[i] * g.zeta : 0.0;
+      const double ed = g.dY - g.zeta - thermal - dilatation_[i] * g.zeta / thetaFactor_;
       double w = ed * ed * s.volume[j];
       if (s.influence) w *= s.influence[b];
       if (s.bondDamage) w *= 1.0 - s.bondDamage[b];
@@ -263,7 +283,10 @@ PERIDOT_REGISTER_MATERIAL(
          "its discrete neighbourhood stores the continuum energy (Peridigm's option; in 2D the "
          "one in-plane shear mode)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
-        {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
+        {"Thermal Expansion Coefficient",
+         "number, default 0: alpha; with a Prescribed Temperature every bond's extension is taken "
+         "less alpha Delta T |xi| (Delta T of the end whose force state it is), in the "
+         "dilatation and the force, as Peridigm"},
         {"Compute Partial Stress", "bool, default false: true is not supported yet"},
         {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
 

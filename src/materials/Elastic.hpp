@@ -16,6 +16,7 @@ class Elastic : public MaterialModel {
   double bulkModulus() const override { return constants_.bulkModulus; }
   double youngsModulus() const override { return constants_.youngsModulus; }
   double poissonsRatio() const override { return constants_.poissonsRatio; }
+  double thermalExpansionCoefficient() const override { return thermalExpansion_; }
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsSmoothBondLaw() const override { return true; }
   void declareFields(FieldManager& fields) override;
@@ -42,9 +43,11 @@ class Elastic : public MaterialModel {
  private:
   // The bond loops, instantiated per option (influence array, bond damage, one-sided bonds,
   // smooth law) so that their bodies have no branch and vectorize.
-  template <bool kInfluence, bool kDamage, bool kSides>
+  // kThermal: extensions less the thermal part, e = |Y| - |xi| - alpha Delta T |xi| (each end's
+  // own thermal strain, state.thermalStrain), as Peridigm forms them.
+  template <bool kInfluence, bool kDamage, bool kSides, bool kThermal>
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
-  template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides>
+  template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides, bool kThermal>
   void forceLoop(const ModelState& state, const std::vector<int>& points) const;
   void smoothEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const;
@@ -53,6 +56,7 @@ class Elastic : public MaterialModel {
   // 1/2 dilatationModulus theta^2 (K in 3D, kappa / r^2 in 2D); alpha = deviatoricFactor G / m.
   double thetaFactor_ = 3.0, dilatationModulus_ = 0.0, deviatoricFactor_ = 15.0;
   double density_ = 0;
+  double thermalExpansion_ = 0;  // alpha
   ElasticConstants constants_;
   bool shearCorrection_ = false;
   double* weightedVolume_ = nullptr;

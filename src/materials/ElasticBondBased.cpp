@@ -16,7 +16,8 @@ ElasticBondBased::ElasticBondBased(ListReader& p) {
   mode_ = readPlaneMode(p);
   bulkModulus_ = readBondBasedBulkModulus(p, mode_);
   if (p.has("Height")) height_ = p.positiveNumber("Height");
-  acceptCommonMaterialKeys(p);
+  thermalExpansion_ = p.number("Thermal Expansion Coefficient", 0.0);
+  acceptCommonMaterialKeys(p, false, true);
 }
 
 void ElasticBondBased::declareFields(FieldManager& fields) {
@@ -125,6 +126,9 @@ PERIDOT_REGISTER_MATERIAL(
          "positive number: thickness h of a 2D model; required with a plane mode on a 3D "
          "discretization (Peridigm's form); on a planar one it must equal the discretization's "
          "thickness"},
+        {"Thermal Expansion Coefficient",
+         "number, default 0: alpha; each end's half of the pair force uses its stretch less "
+         "alpha Delta T (a Peridot extension: Peridigm's bond-based model ignores the key)"},
         {"Finite Difference Probe Length",
          "positive number: accepted for Peridigm decks, unused"}}))
 

@@ -16,6 +16,7 @@ class ElasticBondBased : public MaterialModel {
     return 3.0 * bulkModulus_ * (1.0 - 2.0 * poissonsRatio());
   }
   double poissonsRatio() const override { return bondBasedPoissonsRatio(mode_); }
+  double thermalExpansionCoefficient() const override { return thermalExpansion_; }
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsPlaneModeIn3D() const override { return true; }
   void declareFields(FieldManager& fields) override;
@@ -38,6 +39,7 @@ class ElasticBondBased : public MaterialModel {
 
  private:
   double density_ = 0, bulkModulus_ = 0, height_ = 0;
+  double thermalExpansion_ = 0;  // alpha (a Peridot extension: Peridigm's PMB has none)
   PlaneMode mode_ = PlaneMode::ThreeD;
   double* micromodulus_ = nullptr;  // per point
 };

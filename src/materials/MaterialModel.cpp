@@ -226,7 +226,7 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
   return c;
 }
 
-void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection) {
+void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection, bool hasThermalExpansion) {
   p.positiveNumber("Finite Difference Probe Length", 1.0);
   p.boolean("Verbose", false);
   // Peridigm's implicit-solver options do not change explicit dynamics.
@@ -236,9 +236,11 @@ void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection) {
     throw InputError(p.pathOf("Apply Shear Correction Factor"),
                      "not available for this material model");
   }
-  if (p.has("Thermal Expansion Coefficient") && p.number("Thermal Expansion Coefficient") != 0.0) {
+  if (!hasThermalExpansion && p.has("Thermal Expansion Coefficient") &&
+      p.number("Thermal Expansion Coefficient") != 0.0) {
     throw InputError(p.pathOf("Thermal Expansion Coefficient"),
-                     "thermal strains are not supported by Peridot yet");
+                     "thermal strains are not supported by this material model yet (they are by "
+                     "\"Elastic\" and \"Elastic Bond Based\")");
   }
   if (p.has("Compute Partial Stress") && p.boolean("Compute Partial Stress", false)) {
     throw InputError(p.pathOf("Compute Partial Stress"), "not supported by Peridot yet");

@@ -44,6 +44,13 @@ struct ModelState {
   // Partial-volume quadrature: `influence` includes each bond's cell fraction (see
   // evaluator/ModelEvaluator.hpp).
   bool partialVolumes = false;
+  // Time of the evaluation (time-dependent damage laws).
+  double time = 0.0;
+  // Thermal loading (null without one): the temperature change Delta T of each point and its
+  // thermal strain alpha Delta T (alpha of the point's material); both overlap-indexed and
+  // ghosted. A bond's extension at end i is |Y| - |xi| - alpha_i Delta T_i |xi| (Peridigm).
+  const double* temperatureChange = nullptr;
+  const double* thermalStrain = nullptr;
 };
 
 // How a material reads its elastic constants: in 3D, or in plane stress / plane strain.
@@ -97,6 +104,9 @@ class MaterialModel {
   // Young's modulus and Poisson's ratio of the material as the deck defines it (for a bond-based
   // material, nu is the fixed value of its plane mode); 0 where a model does not define them.
   virtual double youngsModulus() const { return 0.0; }
+  // `Thermal Expansion Coefficient` alpha (0: no thermal strain). Models that do not apply
+  // thermal strains refuse a non-zero value when they read their parameters.
+  virtual double thermalExpansionCoefficient() const { return 0.0; }
   virtual double poissonsRatio() const { return 0.0; }
 
   // The influence function of the run, for derivations made before the model state exists
@@ -156,7 +166,10 @@ double inPlaneBulkModulus(double youngsModulus, double poissonsRatio, PlaneMode 
 bool influenceIntegral(const std::string& influenceFunction, int k, double delta, double& value);
 
 // Keys every material accepts and ignores or checks (Peridigm compatibility).
-void acceptCommonMaterialKeys(ListReader& params, bool hasShearCorrection = false);
+// `hasThermalExpansion`: the model reads `Thermal Expansion Coefficient` itself; otherwise a
+// non-zero value is refused as not supported.
+void acceptCommonMaterialKeys(ListReader& params, bool hasShearCorrection = false,
+                              bool hasThermalExpansion = false);
 
 }  // namespace peridot
 

@@ -71,3 +71,7 @@ peridot_identical(PlasticBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plasti
                   PlasticBar.xml PlasticBar.e exact_plastic.comp 0)
 peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
                   ViscoBar.xml ViscoBar.e exact_visco.comp 0)
+# Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent
+# critical stretch: bitwise equal at 1-4 ranks.
+peridot_identical(ThermalCrack ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ThermalCrack
+                  ThermalCrack.yaml ThermalCrack.e exact_thermal.comp 0)
