@@ -13,6 +13,7 @@
 #include "core/Error.hpp"
 #include "damage/DamageModel.hpp"
 #include "deck/Deck.hpp"
+#include "deck/DeckScreen.hpp"
 #include "deck/RunConfig.hpp"
 #include "materials/MaterialModel.hpp"
 #include "peridot/Version.hpp"
@@ -58,7 +59,11 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
   if (rank == 0) std::cout << "Peridot " << PERIDOT_VERSION << ": " << deckFile << std::endl;
   Simulation simulation(std::move(config), MPI_COMM_WORLD, std::cout);
   if (checkOnly) {
-    if (rank == 0) std::cout << "The deck and its mesh are valid." << std::endl;
+    simulation.reportSetup();  // points, bonds, time step, steps; the outputs can be created
+    if (rank == 0)
+      std::cout << "The deck and its mesh are valid; the output files can be created (none was "
+                   "written)."
+                << std::endl;
     return 0;
   }
   simulation.run();
@@ -155,12 +160,13 @@ int runApplication(int argc, char** argv) {
   } catch (const InputError& e) {
     // Every rank reads the same deck and mesh (and rank-local findings are shared before they
     // are thrown), so every rank fails here alike.
-    if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
+    if (rank == 0) std::cerr << "peridot: error: " << shortenForMessage(e.what()) << std::endl;
     status = 1;
   } catch (const RunError& e) {
     // Shared findings (throwIfAnyRank) are printed by rank 0; an error of this rank alone (an
     // I/O failure) by this rank, before the abort below releases the others.
-    if (rank == 0 || !e.collective()) std::cerr << "peridot: error: " << e.what() << std::endl;
+    if (rank == 0 || !e.collective())
+      std::cerr << "peridot: error: " << shortenForMessage(e.what()) << std::endl;
     status = 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "peridot: error: out of memory on rank " << rank
@@ -168,7 +174,7 @@ int runApplication(int argc, char** argv) {
               << std::endl;
     status = 3;
   } catch (const std::exception& e) {
-    std::cerr << "peridot: internal error: " << e.what() << std::endl;
+    std::cerr << "peridot: internal error: " << shortenForMessage(e.what()) << std::endl;
     status = 4;
   }
   std::cout.flush();

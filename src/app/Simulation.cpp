@@ -29,9 +29,11 @@ std::string formatSeconds(double s) {
     out << std::fixed << std::setprecision(1) << s << " s";
   } else if (s < 3600) {
     out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
-  } else {
-    out << static_cast<int>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
+  } else if (s < 1e6 * 3600) {
+    out << static_cast<long long>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
         << " min";
+  } else {
+    out << "more than a million hours";  // also inf/NaN: no cast of a value an int cannot hold
   }
   return out.str();
 }
@@ -139,6 +141,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
+  if (topology_.globalNumPoints == 1) {
+    throw InputError("Discretization",
+                     "the discretization has a single point; a peridynamic body needs at least "
+                     "two points within a horizon of each other");
+  }
   if (topology_.globalNumBonds == 0) {
     throw InputError("Blocks", "no point has a neighbour: the horizon (smallest " +
                                    formatNumber(horizonRange[0]) +
@@ -288,10 +295,17 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     for (const auto& b : blocks_)
       b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
     stableDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
+    if (!(stableDt_ > 0)) explainZeroTimeStep(stiffness.data());
   }
   const auto& s = config_.solver;
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
+  if (!(ratio < 1e15)) {  // also NaN; a long long would not hold the count
+    throw InputError(s.path + " -> Final Time",
+                     "the run would take " + formatNumber(ratio) + " steps of dt = " +
+                         formatNumber(dt_) + " (the stable time step estimate is " +
+                         formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
+  }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
   if (numSteps_ < 1) {
     throw InputError(s.path + " -> Final Time",
@@ -343,6 +357,39 @@ void Simulation::checkDimension() {
                      "contact in a 2D discretization is not supported yet (its spring constant "
                      "is the 3D one)");
   }
+}
+
+void Simulation::explainZeroTimeStep(const double* stiffness) {
+  // A zero stable time step has one of two causes: two points at the same place (a bond of
+  // zero length is infinitely stiff) or a stiffness that overflows (a huge modulus). Name it,
+  // with the point, rather than report "dt = 0".
+  std::string why;
+  for (int i = 0; i < topology_.numOwned && why.empty(); ++i) {
+    if (std::isfinite(stiffness[i]) && !(stiffness[i] > 0 && density_[i] / stiffness[i] == 0))
+      continue;
+    const double* xi = &topology_.referencePosition[3 * i];
+    for (auto b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b) {
+      const int j = topology_.neighbors[b];
+      const double* xj = &topology_.referencePosition[3 * j];
+      if (xi[0] == xj[0] && xi[1] == xj[1] && xi[2] == xj[2] && topology_.imageSource.empty()) {
+        why = "points " + std::to_string(topology_.overlapGlobalId[i] + 1) + " and " +
+              std::to_string(topology_.overlapGlobalId[j] + 1) + " lie at the same position (" +
+              formatNumber(xi[0]) + ", " + formatNumber(xi[1]) + ", " + formatNumber(xi[2]) +
+              "): a bond of zero length is infinitely stiff, so no time step is stable; remove "
+              "the duplicate point from the mesh";
+        break;
+      }
+    }
+    if (why.empty()) {
+      why = "the bond stiffness at point " + std::to_string(topology_.overlapGlobalId[i] + 1) +
+            " (block " + blocks_[blockIndexOfPoint_[i]].name +
+            ") overflows (a modulus too large for double precision?), so the stable time step "
+            "is 0; check the material's moduli and density";
+    }
+  }
+  if (why.empty()) why = "the stable time step is 0; check the material's moduli and density";
+  throwIfAnyRank(why, comm_);
+  throw InputError(why);  // unreachable: throwIfAnyRank throws on every rank
 }
 
 void Simulation::openOutputs() {
@@ -447,10 +494,8 @@ void Simulation::checkFinite(long long step, double time) {
   throwIfAnyRank(msg.str(), comm_, true);
 }
 
-void Simulation::run() {
+void Simulation::reportSetup() {
   const auto& s = config_.solver;
-  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
-  if (resumed_ && firstStep_ > numSteps_) return;
   if (!outputs_) openOutputs();
   long long myBonds = topology_.numBonds(), maxBonds = 0;
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
@@ -484,6 +529,12 @@ void Simulation::run() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
+}
+
+void Simulation::run() {
+  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
+  if (resumed_ && firstStep_ > numSteps_) return;
+  reportSetup();
   if (!resumed_) {
     for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
     if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
