@@ -16,6 +16,7 @@
 #include "deck/DeckScreen.hpp"
 #include "deck/RunConfig.hpp"
 #include "materials/MaterialModel.hpp"
+#include "peridot/Commit.hpp"
 #include "peridot/Version.hpp"
 
 namespace peridot {
@@ -36,10 +37,12 @@ const char* kUsage =
     "\n"
     "Options:\n"
     "  -h, --help            print this help and exit\n"
-    "  -v, --version         print the version and exit\n"
+    "  -v, --version         print the version, commit and build type, and exit\n"
     "  --list-models         list the material and damage models\n"
     "  --help-model NAME     describe a material or damage model and its parameters\n"
-    "  --check               validate the deck and the mesh, then exit without running\n"
+    "  --check               validate the deck and the mesh, print the points, bonds, stable\n"
+    "                        time step and number of steps, check that the output files can\n"
+    "                        be created (none is written), and exit without running\n"
     "\n"
     "The deck vocabulary is documented in doc/deck-reference.md.\n";
 
@@ -109,7 +112,9 @@ int runApplication(int argc, char** argv) {
       return 0;
     }
     if (arg == "-v" || arg == "--version") {
-      std::cout << "peridot " << PERIDOT_VERSION << std::endl;
+      std::cout << "peridot " << PERIDOT_VERSION << "\ncommit: " << PERIDOT_COMMIT
+                << "\nbuild type: " << PERIDOT_BUILD_TYPE << "\ncompiler: " << PERIDOT_CXX_COMPILER
+                << "\nMPI: " << MPI_VERSION << "." << MPI_SUBVERSION << " interface" << std::endl;
       return 0;
     }
     if (arg == "--list-models") {

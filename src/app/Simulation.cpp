@@ -130,17 +130,33 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
       }
     }
   }
+  std::vector<long long> bondFilterCuts(config_.discretization.bondFilters.size(), 0);
   {
     Timers::Scope t(timers_, "Setup: partition + search");
     TopologyOptions options;
     options.rule = neighborhoodRule(config_.discretization);
     options.bondFilters = &config_.discretization.bondFilters;
+    options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
     topology_ = buildTopology(cloud, cloudHorizon, options, comm_);
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
+  if (!bondFilterCuts.empty()) {
+    MPI_Allreduce(MPI_IN_PLACE, bondFilterCuts.data(), static_cast<int>(bondFilterCuts.size()),
+                  MPI_LONG_LONG, MPI_SUM, comm_);
+    for (std::size_t k = 0; k < bondFilterCuts.size() && rank_ == 0; ++k)
+      if (bondFilterCuts[k] == 0) {
+        // Usually a plane turned the wrong way (its normal or bottom vector) or placed beside
+        // the body: the crack it stands for is not there.
+        std::cerr << "peridot: warning: Discretization -> Bond Filters -> "
+                  << config_.discretization.bondFilters[k].name
+                  << ": the filter cuts no bond (check its corner, normal, bottom unit vector "
+                     "and lengths: the plane must cross the body)"
+                  << std::endl;
+      }
+  }
   if (topology_.globalNumPoints == 1) {
     throw InputError("Discretization",
                      "the discretization has a single point; a peridynamic body needs at least "

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Suggest.hpp"
 #include "deck/Deck.hpp"
 
 namespace peridot {
@@ -60,8 +61,9 @@ const typename Registry<Base>::Entry& Registry<Base>::lookup(
   if (!entry) {
     std::string known;
     for (const auto& n : names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-    throw InputError(params.pathOf(kindKey),
-                     "unknown " + kind + " \"" + name + "\"; Peridot knows " + known);
+    throw InputError(params.pathOf(kindKey), "unknown " + kind + " \"" + name + "\"" +
+                                                 didYouMean(name, names()) + "; Peridot knows " +
+                                                 known);
   }
   // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
   for (const auto& key : params.keys()) {

@@ -16,6 +16,7 @@
 #include "core/Error.hpp"
 #include "core/Format.hpp"
 #include "core/InputFile.hpp"
+#include "core/Suggest.hpp"
 #include "deck/DeckScreen.hpp"
 
 namespace peridot {
@@ -312,7 +313,8 @@ std::string ListReader::choice(const std::string& key, const std::vector<std::st
     if (v == c) return v;
   std::string list;
   for (std::size_t i = 0; i < choices.size(); ++i) list += (i ? ", \"" : "\"") + choices[i] + "\"";
-  throw InputError(pathOf(key), "unknown value \"" + v + "\"; expected one of " + list);
+  throw InputError(pathOf(key), "unknown value \"" + v + "\"" + didYouMean(v, choices) +
+                                    "; expected one of " + list);
 }
 
 std::string ListReader::numberOrExpression(const std::string& key) {

@@ -136,9 +136,10 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
           if (in.omitBondsBetweenBlocks && in.blockId[j] != in.blockId[q]) continue;
           if (filtered) {
             bool cut = false;
-            for (const auto& f : *in.bondFilters)
-              if (f.cuts(xq, xj)) {
+            for (std::size_t k = 0; k < in.bondFilters->size(); ++k)
+              if ((*in.bondFilters)[k].cuts(xq, xj)) {
                 cut = true;
+                if (in.bondFilterCuts) ++(*in.bondFilterCuts)[k];
                 break;
               }
             if (cut) continue;

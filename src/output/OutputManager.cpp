@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <numeric>
 
 #include "core/CollectiveError.hpp"
@@ -63,6 +64,15 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     : topology_(topology), source_(source), timers_(timers) {
   // Group the streams into files.
   for (const auto& out : config.outputs) {
+    if (out.frequency == -1 && topology.rank == 0) {
+      // Peridigm's default when the key is missing: the stream writes nothing, not even the
+      // initial state. Said, since a forgotten key otherwise looks like a run without output.
+      std::cerr << "peridot: warning: " << out.path
+                << " -> Output Frequency: -1 (the default when the key is missing, as in "
+                   "Peridigm): this stream writes no file; set it to the number of steps "
+                   "between records"
+                << std::endl;
+    }
     if (out.frequency == -1 || out.variables.empty()) continue;
     bool onlyGlobal = true;
     for (const auto& v : out.variables) onlyGlobal = onlyGlobal && source.components(v) == 0;
