@@ -24,7 +24,7 @@ set(PERIDOT_BADDECKS_WAVEINBAR "${PERIDOT_SHARED_DIR}/peridigm-cases/WaveInBar/W
 #                 [TRUNCATE <bytes>] [MAKE_DIR <dir>])
 # TRUNCATE copies the first <bytes> bytes of WaveInBar.g to cut.g in the work directory.
 function(peridot_baddeck name)
-  cmake_parse_arguments(PARSE_ARGV 1 B "" "DECK;ARG;EXPECT;ALSO;NP;CDL;TRUNCATE;MAKE_DIR;R1;R2;FIFO;STATUS;STDOUT" "")
+  cmake_parse_arguments(PARSE_ARGV 1 B "" "DECK;ARG;EXPECT;ALSO;NP;CDL;TRUNCATE;MAKE_DIR;R1;R2;FIFO;STATUS;STDOUT;OPTION" "")
   set(test baddeck_${name})
   set(args
     -DPERIDOT=$<TARGET_FILE:peridot>
@@ -61,7 +61,7 @@ function(peridot_baddeck name)
   # Fuzzer findings: R1/R2 "<text>|<count>" replace %%R1%%/%%R2%% in the deck with <text>
   # repeated <count> times (huge or deeply nested decks are made, not stored); FIFO makes a
   # named pipe; STATUS 0 with STDOUT: the deck must run and print the fragment.
-  foreach(r R1 R2 FIFO STDOUT)
+  foreach(r R1 R2 FIFO STDOUT OPTION)
     if(B_${r})
       list(APPEND args "-D${r}=${B_${r}}")
     endif()
@@ -322,3 +322,27 @@ foreach(np 1 2)
 endforeach()
 peridot_baddeck(fuzz_far_point_near DECK fuzz_far_point_near.xml STATUS 0
   STDOUT [[Points: 216, bonds (one-sided): 10024,]] EXPECT [[Done.]])
+
+# ---- command line and warnings (issue 15, item 3) ----
+# --check prints the set-up (points, bonds, stable time step, steps) and writes no file.
+peridot_baddeck(check_prints_setup DECK fuzz_far_point_near.xml OPTION --check STATUS 0
+  STDOUT [[Points: 216, bonds (one-sided): 10024, ranks: 1]]
+  EXPECT [[Time step: 1e-07 (Fixed dt), steps: 10]])
+# --check finds an output that cannot be created (it used to pass and the run to fail).
+peridot_baddeck(check_output_dir_missing DECK fuzz_output_dir_missing.yaml OPTION --check
+  EXPECT [[Output -> Output Filename: cannot create "no_such_dir/bad.e": directory "no_such_dir": No such file or directory]])
+# The 2D crack-line recipes of doc/deck-reference.md. Gold by hand: the 4x4 grid (horizon 1.5)
+# has 42 bond pairs (84 one-sided); the line y = 2 cuts 4 vertical and 6 diagonal pairs: 64.
+peridot_baddeck(crack_line_horizontal DECK crack_line_horizontal.yaml STATUS 0
+  STDOUT [[Points: 16, bonds (one-sided): 64,]] EXPECT [[Done.]])
+peridot_baddeck(crack_line_horizontal_wrong DECK crack_line_horizontal_wrong.yaml STATUS 0
+  STDOUT [[Points: 16, bonds (one-sided): 84,]]
+  EXPECT [[peridot: warning: Discretization -> Bond Filters -> Crack Line: the filter cuts no bond]])
+peridot_baddeck(output_frequency_missing DECK output_frequency_missing.yaml STATUS 0
+  STDOUT [[Done.]]
+  EXPECT [[peridot: warning: Output -> Output Frequency: -1 (the default when the key is missing, as in Peridigm): this stream writes no file]])
+peridot_baddeck(model_name_case DECK model_name_case.yaml
+  EXPECT [[Materials -> My Material -> Material Model: unknown material model "elastic" (did you mean "Elastic"?)]])
+add_test(NAME cli_version COMMAND peridot --version)
+set_tests_properties(cli_version PROPERTIES LABELS baddeck
+  PASS_REGULAR_EXPRESSION "peridot [0-9.]+\ncommit: [^\n]+\nbuild type: [A-Za-z]+")

@@ -19,6 +19,7 @@
 #   MAKE_DIR         create this directory in WORK_DIR (to hand peridot a directory)
 #   R1, R2           "<text>|<count>": %%R1%% (%%R2%%) in the copied deck becomes <text> repeated
 #                    <count> times (huge names, deep nesting: made here, not stored)
+#   OPTION           a command-line option given before the deck (e.g. --check)
 #   FIFO             make a named pipe of this name in WORK_DIR (with mkfifo)
 #   EXPECT_STATUS 0  the deck must run: exit 0, no "error" on stderr, and STDOUT (literal)
 #                    on stdout; EXPECT is then also looked for on stdout and stderr together
@@ -105,7 +106,7 @@ if(NP)
 else()
   set(launcher "")
 endif()
-execute_process(COMMAND ${launcher} "${PERIDOT}" "${DECK_ARG}"
+execute_process(COMMAND ${launcher} "${PERIDOT}" ${OPTION} "${DECK_ARG}"
                 WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc
                 OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
 message("exit status: ${rc}\n--- stderr ---\n${err}--- stdout ---\n${out}--------------")
@@ -125,6 +126,12 @@ if(EXPECT_STATUS STREQUAL "0")
   endif()
   if(err MATCHES "error")
     string(APPEND problems "stderr reports an error\n")
+  endif()
+  if(OPTION STREQUAL "--check")
+    file(GLOB outputs "${WORK_DIR}/*.e" "${WORK_DIR}/*.h" "${WORK_DIR}/*.e.*")
+    if(outputs)
+      string(APPEND problems "--check wrote output files: ${outputs}\n")
+    endif()
   endif()
   if(problems)
     message(FATAL_ERROR "deck ${DECK_ARG}:\n${problems}")
