@@ -25,6 +25,8 @@ std::string formatTime(double t) {
 
 }  // namespace
 
+constexpr std::size_t kMaxExodusName = 32;  // libexodus's default name length
+
 std::string whyCannotCreate(const std::string& path) {
   if (path.size() > kMaxOutputPath) {
     return "the name is " + std::to_string(path.size()) +
@@ -124,6 +126,16 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     const char* axes[3] = {"X", "Y", "Z"};
     for (const auto& v : f.variables) {
       const int c = source.components(v);
+      const bool vector = c == 3 || (c == 0 && source.globalSize(v) == 3);
+      if (v.size() + (vector ? 1 : 0) > kMaxExodusName) {
+        // libexodus would cut the name to 32 characters (two labels could become one).
+        const std::string stream = f.deckPath.substr(0, f.deckPath.rfind(" -> "));
+        throw InputError(stream + " -> Output Variables -> " + v,
+                         "the name is " + std::to_string(v.size()) +
+                             " characters long; an Exodus variable name holds at most " +
+                             std::to_string(kMaxExodusName) +
+                             (vector ? " (with X, Y or Z appended)" : ""));
+      }
       if (c == 3) {
         for (int d = 0; d < dimension_; ++d) f.header.nodalNames.push_back(v + axes[d]);
       } else if (c == 1) {

@@ -346,3 +346,5 @@ peridot_baddeck(model_name_case DECK model_name_case.yaml
 add_test(NAME cli_version COMMAND peridot --version)
 set_tests_properties(cli_version PROPERTIES LABELS baddeck
   PASS_REGULAR_EXPRESSION "peridot [0-9.]+\ncommit: [^\n]+\nbuild type: [A-Za-z]+")
+peridot_baddeck(output_label_too_long DECK output_label_too_long.yaml
+  EXPECT [[Output -> Output Variables -> Left_Force_Of_The_Notched_Specimen_Sum: the name is 38 characters long; an Exodus variable name holds at most 32]])
