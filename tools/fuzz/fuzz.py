@@ -440,7 +440,7 @@ def mutate_text_mesh(rng, text):
     elif op == "scale":
         s = rng.choice([1e-300, 1e-12, 1e10, 1e200])
         body = ["%r %r %r %s %r" % (float(p[0]) * s, float(p[1]) * s, float(p[2]) * s, p[3],
-                                     float(p[4]) * s ** 3)
+                                     float(p[4]) * min(s, 1e100) ** 3)
                 for p in (l.split() for l in body)]
     elif op == "coincident":
         body.append(body[0])
