@@ -13,8 +13,10 @@
 #include "core/Error.hpp"
 #include "damage/DamageModel.hpp"
 #include "deck/Deck.hpp"
+#include "deck/DeckScreen.hpp"
 #include "deck/RunConfig.hpp"
 #include "materials/MaterialModel.hpp"
+#include "peridot/Commit.hpp"
 #include "peridot/Version.hpp"
 
 namespace peridot {
@@ -35,10 +37,12 @@ const char* kUsage =
     "\n"
     "Options:\n"
     "  -h, --help            print this help and exit\n"
-    "  -v, --version         print the version and exit\n"
+    "  -v, --version         print the version, commit and build type, and exit\n"
     "  --list-models         list the material and damage models\n"
     "  --help-model NAME     describe a material or damage model and its parameters\n"
-    "  --check               validate the deck and the mesh, then exit without running\n"
+    "  --check               validate the deck and the mesh, print the points, bonds, stable\n"
+    "                        time step and number of steps, check that the output files can\n"
+    "                        be created (none is written), and exit without running\n"
     "\n"
     "The deck vocabulary is documented in doc/deck-reference.md.\n";
 
@@ -61,7 +65,11 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
   if (rank == 0) std::cout << "Peridot " << PERIDOT_VERSION << ": " << deckFile << std::endl;
   Simulation simulation(std::move(config), MPI_COMM_WORLD, std::cout);
   if (checkOnly) {
-    if (rank == 0) std::cout << "The deck and its mesh are valid." << std::endl;
+    simulation.reportSetup();  // points, bonds, time step, steps; the outputs can be created
+    if (rank == 0)
+      std::cout << "The deck and its mesh are valid; the output files can be created (none was "
+                   "written)."
+                << std::endl;
     return 0;
   }
   simulation.run();
@@ -107,7 +115,9 @@ int runApplication(int argc, char** argv) {
       return 0;
     }
     if (arg == "-v" || arg == "--version") {
-      std::cout << "peridot " << PERIDOT_VERSION << std::endl;
+      std::cout << "peridot " << PERIDOT_VERSION << "\ncommit: " << PERIDOT_COMMIT
+                << "\nbuild type: " << PERIDOT_BUILD_TYPE << "\ncompiler: " << PERIDOT_CXX_COMPILER
+                << "\nMPI: " << MPI_VERSION << "." << MPI_SUBVERSION << " interface" << std::endl;
       return 0;
     }
     if (arg == "--list-models") {
@@ -158,12 +168,13 @@ int runApplication(int argc, char** argv) {
   } catch (const InputError& e) {
     // Every rank reads the same deck and mesh (and rank-local findings are shared before they
     // are thrown), so every rank fails here alike.
-    if (rank == 0) std::cerr << "peridot: error: " << e.what() << std::endl;
+    if (rank == 0) std::cerr << "peridot: error: " << shortenForMessage(e.what()) << std::endl;
     status = 1;
   } catch (const RunError& e) {
     // Shared findings (throwIfAnyRank) are printed by rank 0; an error of this rank alone (an
     // I/O failure) by this rank, before the abort below releases the others.
-    if (rank == 0 || !e.collective()) std::cerr << "peridot: error: " << e.what() << std::endl;
+    if (rank == 0 || !e.collective())
+      std::cerr << "peridot: error: " << shortenForMessage(e.what()) << std::endl;
     status = 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "peridot: error: out of memory on rank " << rank
@@ -171,7 +182,7 @@ int runApplication(int argc, char** argv) {
               << std::endl;
     status = 3;
   } catch (const std::exception& e) {
-    std::cerr << "peridot: internal error: " << e.what() << std::endl;
+    std::cerr << "peridot: internal error: " << shortenForMessage(e.what()) << std::endl;
     status = 4;
   }
   std::cout.flush();

@@ -25,7 +25,8 @@ void installStopSignalHandlers() {
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = SA_RESTART;
-  for (int s : {SIGTERM, SIGINT, SIGUSR1}) sigaction(s, &action, nullptr);
+  // SIGHUP (the terminal closed) too: a stop with a checkpoint beats being killed mid-step.
+  for (int s : {SIGTERM, SIGINT, SIGUSR1, SIGHUP}) sigaction(s, &action, nullptr);
 }
 
 int pendingStopSignal() { return stopSignal; }
@@ -42,6 +43,8 @@ const char* signalName(int signal) {
       return "SIGINT";
     case SIGUSR1:
       return "SIGUSR1";
+    case SIGHUP:
+      return "SIGHUP";
     default:
       return "a signal";
   }

@@ -30,9 +30,11 @@ std::string formatSeconds(double s) {
     out << std::fixed << std::setprecision(1) << s << " s";
   } else if (s < 3600) {
     out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
-  } else {
-    out << static_cast<int>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
+  } else if (s < 1e6 * 3600) {
+    out << static_cast<long long>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
         << " min";
+  } else {
+    out << "more than a million hours";  // also inf/NaN: no cast of a value an int cannot hold
   }
   return out.str();
 }
@@ -135,17 +137,38 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
       }
     }
   }
+  std::vector<long long> bondFilterCuts(config_.discretization.bondFilters.size(), 0);
   {
     Timers::Scope t(timers_, "Setup: partition + search");
     TopologyOptions options;
     options.rule = neighborhoodRule(config_.discretization);
     options.bondFilters = &config_.discretization.bondFilters;
+    options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
     topology_ = buildTopology(cloud, cloudHorizon, options, comm_);
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
+  if (!bondFilterCuts.empty()) {
+    MPI_Allreduce(MPI_IN_PLACE, bondFilterCuts.data(), static_cast<int>(bondFilterCuts.size()),
+                  MPI_LONG_LONG, MPI_SUM, comm_);
+    for (std::size_t k = 0; k < bondFilterCuts.size() && rank_ == 0; ++k)
+      if (bondFilterCuts[k] == 0) {
+        // Usually a plane turned the wrong way (its normal or bottom vector) or placed beside
+        // the body: the crack it stands for is not there.
+        std::cerr << "peridot: warning: Discretization -> Bond Filters -> "
+                  << config_.discretization.bondFilters[k].name
+                  << ": the filter cuts no bond (check its corner, normal, bottom unit vector "
+                     "and lengths: the plane must cross the body)"
+                  << std::endl;
+      }
+  }
+  if (topology_.globalNumPoints == 1) {
+    throw InputError("Discretization",
+                     "the discretization has a single point; a peridynamic body needs at least "
+                     "two points within a horizon of each other");
+  }
   // Without bonds the points interact only through contact: a valid Peridigm deck (contact-only
   // runs use a horizon below the spacing). Without contact nothing would interact at all.
   if (topology_.globalNumBonds == 0 && !config_.contact.enabled) {
@@ -334,6 +357,12 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
+  if (!(ratio < 1e15)) {  // also NaN; a long long would not hold the count
+    throw InputError(s.path + " -> Final Time",
+                     "the run would take " + formatNumber(ratio) + " steps of dt = " +
+                         formatNumber(dt_) + " (the stable time step estimate is " +
+                         formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
+  }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
   if (numSteps_ < 1) {
     throw InputError(s.path + " -> Final Time",
@@ -386,6 +415,39 @@ void Simulation::checkDimension() {
                      "contact in a 2D discretization is not supported yet (its spring constant "
                      "is the 3D one)");
   }
+}
+
+void Simulation::explainZeroTimeStep(const double* stiffness) {
+  // A zero stable time step has one of two causes: two points at the same place (a bond of
+  // zero length is infinitely stiff) or a stiffness that overflows (a huge modulus). Name it,
+  // with the point, rather than report "dt = 0".
+  std::string why;
+  for (int i = 0; i < topology_.numOwned && why.empty(); ++i) {
+    if (std::isfinite(stiffness[i]) && !(stiffness[i] > 0 && density_[i] / stiffness[i] == 0))
+      continue;
+    const double* xi = &topology_.referencePosition[3 * i];
+    for (auto b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b) {
+      const int j = topology_.neighbors[b];
+      const double* xj = &topology_.referencePosition[3 * j];
+      if (xi[0] == xj[0] && xi[1] == xj[1] && xi[2] == xj[2] && topology_.imageSource.empty()) {
+        why = "points " + std::to_string(topology_.overlapGlobalId[i] + 1) + " and " +
+              std::to_string(topology_.overlapGlobalId[j] + 1) + " lie at the same position (" +
+              formatNumber(xi[0]) + ", " + formatNumber(xi[1]) + ", " + formatNumber(xi[2]) +
+              "): a bond of zero length is infinitely stiff, so no time step is stable; remove "
+              "the duplicate point from the mesh";
+        break;
+      }
+    }
+    if (why.empty()) {
+      why = "the bond stiffness at point " + std::to_string(topology_.overlapGlobalId[i] + 1) +
+            " (block " + blocks_[blockIndexOfPoint_[i]].name +
+            ") overflows (a modulus too large for double precision?), so the stable time step "
+            "is 0; check the material's moduli and density";
+    }
+  }
+  if (why.empty()) why = "the stable time step is 0; check the material's moduli and density";
+  throwIfAnyRank(why, comm_);
+  throw InputError(why);  // unreachable: throwIfAnyRank throws on every rank
 }
 
 void Simulation::openOutputs() {
@@ -516,10 +578,8 @@ void Simulation::checkFinite(long long step, double time) {
   throwIfAnyRank(message, comm_, true);
 }
 
-void Simulation::run() {
+void Simulation::reportSetup() {
   const auto& s = config_.solver;
-  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
-  if (resumed_ && firstStep_ > numSteps_) return;
   if (!outputs_) openOutputs();
   long long myBonds = topology_.numBonds(), maxBonds = 0;
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
@@ -559,6 +619,12 @@ void Simulation::run() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
+}
+
+void Simulation::run() {
+  // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
+  if (resumed_ && firstStep_ > numSteps_) return;
+  reportSetup();
   if (!resumed_) {
     for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
     if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);

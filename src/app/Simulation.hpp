@@ -38,6 +38,10 @@ class Simulation {
   bool stopped() const { return stopped_; }
   int stopSignal() const { return stopSignal_; }
   // The step and time the run reached (the checkpoint's, when stopped).
+  // Collective: checks that the output files can be created (without creating them) and rank 0
+  // prints points, bonds, the stable time step, the time step, the steps and the outputs.
+  // run() calls it; `peridot --check` calls it alone.
+  void reportSetup();
   long long lastStep() const { return lastStep_; }
   double time() const { return time_; }
   // Collective: rank 0 prints checkpoint and signal-check statistics (nothing without Restart).
@@ -62,6 +66,8 @@ class Simulation {
 
  private:
   void openOutputs();
+  // Throws (collectively) the cause of a zero stable time step, in words.
+  [[noreturn]] void explainZeroTimeStep(const double* stiffness);
   // 2D: every block's material in plane stress or strain, no z condition; 3D: no plane material.
   void checkDimension();
   void checkVariables();

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/Error.hpp"
+#include "core/InputFile.hpp"
 
 namespace peridot {
 
@@ -95,6 +96,12 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
       std::string fileName = spec.value;
       fileName.erase(0, fileName.find_first_not_of(" \t"));
       fileName.erase(fileName.find_last_not_of(" \t") + 1);
+      const std::string why = whyNotReadableFile(fileName);
+      if (!why.empty()) {
+        throw InputError(spec.path, "\"" + spec.value +
+                                        "\" is neither a list of point ids nor a readable file (" +
+                                        why + ")");
+      }
       std::ifstream in(fileName);
       if (!in) {
         throw InputError(

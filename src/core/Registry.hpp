@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Suggest.hpp"
 #include "deck/Deck.hpp"
 #include "deck/PeridigmVocabulary.hpp"
 
@@ -65,7 +66,8 @@ const typename Registry<Base>::Entry& Registry<Base>::lookup(
         isIn(peridigmMaterialModels(), name) || isIn(peridigmDamageModels(), name);
     throw InputError(params.pathOf(kindKey), (peridigms ? "the Peridigm " + kind + " \"" + name +
                                                               "\" is not supported by Peridot yet"
-                                                        : "unknown " + kind + " \"" + name + "\"") +
+                                                        : "unknown " + kind + " \"" + name + "\"" +
+                                                              didYouMean(name, names())) +
                                                  "; Peridot knows " + known);
   }
   // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.

@@ -5,6 +5,7 @@
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +16,9 @@
 
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "core/InputFile.hpp"
+#include "core/Suggest.hpp"
+#include "deck/DeckScreen.hpp"
 
 namespace peridot {
 
@@ -94,6 +98,10 @@ void checkXmlLiterals(const Teuchos::XMLObject& list, const std::string& path,
       throw InputError(here, "expected a number (type \"double\"), got \"" + value + "\"");
     } else if (type == "int" && !parseInteger(value, i)) {
       throw InputError(here, "expected an integer (type \"int\"), got \"" + value + "\"");
+    } else if (type == "int" && (i < INT_MIN || i > INT_MAX)) {
+      // Teuchos stores type="int" in 32 bits and would wrap the value silently.
+      throw InputError(here, "the integer " + trim(value) +
+                                 " does not fit type \"int\" (32 bits; largest 2147483647)");
     } else if (type == "bool" && lower != "true" && lower != "false" && lower != "yes" &&
                lower != "no" && lower != "1" && lower != "0") {
       throw InputError(here, "expected true or false (type \"bool\"), got \"" + value + "\"");
@@ -136,16 +144,22 @@ std::string describeEntry(const Teuchos::ParameterEntry& e) {
 
 Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName,
                                               std::vector<std::string>* warnings) {
+  const std::string why = whyNotReadableFile(fileName);
+  if (!why.empty()) throw InputError("cannot open deck file \"" + fileName + "\": " + why);
   std::ifstream probe(fileName);
   if (!probe) throw InputError("cannot open deck file \"" + fileName + "\"");
-  if (std::filesystem::is_directory(fileName)) {
-    throw InputError("cannot open deck file \"" + fileName + "\": it is a directory");
-  }
   const bool yaml = endsWith(fileName, ".yaml") || endsWith(fileName, ".yml");
   const bool xml = endsWith(fileName, ".xml");
   if (!yaml && !xml) {
     throw InputError("deck file \"" + fileName + "\" must end in .xml, .yaml or .yml");
   }
+  std::string text;
+  {
+    std::ostringstream all;
+    all << probe.rdbuf();
+    text = all.str();
+  }
+  screenDeckText(text, yaml, fileName);
   Teuchos::RCP<Teuchos::ParameterList> deck;
   if (xml) {
     Teuchos::XMLObject root;
@@ -161,6 +175,11 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const std::string& fileName,
                 : Teuchos::getParametersFromXmlFile(fileName);
   } catch (const std::exception& e) {
     std::string what = e.what();
+    if (yaml) {
+      const std::string words = explainYamlFailure(what, text);
+      if (!words.empty())
+        throw InputError("cannot parse deck file \"" + fileName + "\" as YAML: " + words);
+    }
     // Teuchos prefixes its messages with source locations; keep the lines that say where in
     // the deck the problem is, and the last informative line.
     std::istringstream lines(what);
@@ -313,7 +332,8 @@ std::string ListReader::choice(const std::string& key, const std::vector<std::st
     if (v == c) return v;
   std::string list;
   for (std::size_t i = 0; i < choices.size(); ++i) list += (i ? ", \"" : "\"") + choices[i] + "\"";
-  throw InputError(pathOf(key), "unknown value \"" + v + "\"; expected one of " + list);
+  throw InputError(pathOf(key), "unknown value \"" + v + "\"" + didYouMean(v, choices) +
+                                    "; expected one of " + list);
 }
 
 std::string ListReader::numberOrExpression(const std::string& key) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/InputFile.hpp"
 #include "discretization/DistributedExodusReader.hpp"
 
 namespace peridot {
@@ -151,7 +152,8 @@ class ClassicHeader {
 // Why fileName cannot be read as an Exodus file, or "" when it looks fine.
 std::string openProblem(const std::string& fileName) {
   std::error_code ec;
-  if (std::filesystem::is_directory(fileName, ec)) return "it is a directory";
+  const std::string notFile = whyNotReadableFile(fileName);
+  if (!notFile.empty()) return notFile;
   std::FILE* f = std::fopen(fileName.c_str(), "rb");
   if (f == nullptr) return std::strerror(errno);
   std::fclose(f);

@@ -10,6 +10,7 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "core/InputFile.hpp"
 #include "discretization/Slicing.hpp"
 
 namespace peridot {
@@ -47,18 +48,19 @@ PointCloud readTextMeshShare(const std::string& fileName, const std::string& dec
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  std::ifstream in(fileName, std::ios::binary);
   {
+    // Checked before opening: opening a FIFO would block.
+    const std::string why = whyNotReadableFile(fileName);
     std::string problem;
-    if (!in) {
-      problem = InputError(deckPath, "cannot open text mesh \"" + fileName + "\"").what();
-    } else if (std::filesystem::is_directory(fileName)) {
-      problem =
-          InputError(deckPath, "cannot open text mesh \"" + fileName + "\": it is a directory")
-              .what();
+    if (!why.empty()) {
+      problem = InputError(deckPath, "cannot open text mesh \"" + fileName + "\": " + why).what();
     }
     throwIfAnyRank(problem, comm);
   }
+  std::ifstream in(fileName, std::ios::binary);
+  throwIfAnyRank(in ? std::string()
+                    : InputError(deckPath, "cannot open text mesh \"" + fileName + "\"").what(),
+                 comm);
   // This rank takes the lines that start in its byte range [begin, end).
   in.seekg(0, std::ios::end);
   const Slicing bytes{static_cast<long long>(in.tellg()), size};

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "neighbor/PartialVolume.hpp"
 
@@ -15,6 +18,8 @@ int boxCells(const NeighborhoodRule& rule, int d, double horizon) {
   const int n = static_cast<int>(std::floor(horizon / rule.cellSize[d] + 0.5));
   return std::min(n, rule.cellCount[d]);
 }
+
+constexpr std::uint64_t kMaxCell = (1ULL << 21) - 1;
 
 }  // namespace
 
@@ -55,36 +60,32 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
   if (in.unionOfHorizons)
     for (std::size_t i = 0; i < in.numPoints; ++i)
       reach = std::max(reach, searchReach(in.rule, in.horizon[i]));
-  // Cell edge = largest reach, so a query scans at most its 27 surrounding cells; grow the
-  // cells if the grid would have far more cells than points (a huge box with few points).
-  double cell = reach > 0 ? reach : 1.0;
-  long long dims[3];
-  for (;;) {
-    long long total = 1;
-    for (int d = 0; d < 3; ++d) {
-      dims[d] = std::max<long long>(1, static_cast<long long>((hi[d] - lo[d]) / cell) + 1);
-      total *= dims[d];
-    }
-    if (total <= 8 * static_cast<long long>(in.numPoints) + 64) break;
-    cell *= 1.5;
-  }
-  auto cellCoord = [&](double v, int d) {
-    return std::min<long long>(dims[d] - 1, static_cast<long long>((v - lo[d]) / cell));
+  // Cells of edge = the largest reach, so a query scans at most 3 cells per axis. Only the
+  // occupied cells are stored (points sorted by cell key), so memory is O(points) however far
+  // apart the points lie. Cell coordinates are clamped to 21 bits per axis; clamping is
+  // monotone, so the cells a query scans still hold all its neighbours (points beyond 2^21
+  // cells from the lowest only share cells, which costs candidates, never bonds).
+  const double cell = reach > 0 && std::isfinite(reach) ? reach : 0.0;
+  auto cellIndex = [&](double v, int d) -> std::uint64_t {
+    if (cell == 0.0) return 0;  // no reach, or an infinite one: one cell holds every point
+    const double c = std::floor((v - lo[d]) / cell);
+    if (!(c > 0)) return 0;  // also NaN
+    return c >= static_cast<double>(kMaxCell) ? kMaxCell : static_cast<std::uint64_t>(c);
   };
-  const std::size_t numCells = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
-  std::vector<std::size_t> cellStart(numCells + 1, 0), cellPoints(in.numPoints);
-  std::vector<std::size_t> cellOf(in.numPoints);
+  auto keyOf = [](std::uint64_t cx, std::uint64_t cy, std::uint64_t cz) {
+    return (cz << 42) | (cy << 21) | cx;
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> sorted(in.numPoints);
+  std::uint64_t maxCell[3] = {0, 0, 0};
   for (std::size_t i = 0; i < in.numPoints; ++i) {
-    const long long c[3] = {cellCoord(in.x[3 * i], 0), cellCoord(in.x[3 * i + 1], 1),
-                            cellCoord(in.x[3 * i + 2], 2)};
-    cellOf[i] = static_cast<std::size_t>((c[2] * dims[1] + c[1]) * dims[0] + c[0]);
-    ++cellStart[cellOf[i] + 1];
+    std::uint64_t c[3];
+    for (int d = 0; d < 3; ++d) {
+      c[d] = cellIndex(in.x[3 * i + d], d);
+      maxCell[d] = std::max(maxCell[d], c[d]);
+    }
+    sorted[i] = {keyOf(c[0], c[1], c[2]), i};
   }
-  for (std::size_t c = 0; c < numCells; ++c) cellStart[c + 1] += cellStart[c];
-  {
-    std::vector<std::size_t> fill(cellStart.begin(), cellStart.end() - 1);
-    for (std::size_t i = 0; i < in.numPoints; ++i) cellPoints[fill[cellOf[i]]++] = i;
-  }
+  std::sort(sorted.begin(), sorted.end());
 
   const bool box = in.rule.kind == NeighborhoodRule::Kind::CellBox;
   const bool strict = in.rule.kind == NeighborhoodRule::Kind::SphereStrict;
@@ -101,48 +102,51 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
                          ? std::numeric_limits<double>::infinity()
                          : (boxCells(in.rule, d, h) + 0.5) * in.rule.cellSize[d];
     const double r = in.unionOfHorizons ? reach : searchReach(in.rule, h);
-    long long c0[3], c1[3];
+    std::uint64_t c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {
-      c0[d] =
-          std::max<long long>(0, static_cast<long long>(std::floor((xq[d] - r - lo[d]) / cell)));
-      c1[d] = cellCoord(std::min(hi[d], xq[d] + r), d);
+      c0[d] = cellIndex(xq[d] - r, d);
+      const double upper = xq[d] + r;
+      c1[d] = std::isnan(upper) ? maxCell[d] : std::min(maxCell[d], cellIndex(upper, d));
     }
-    for (long long cz = c0[2]; cz <= c1[2]; ++cz)
-      for (long long cy = c0[1]; cy <= c1[1]; ++cy)
-        for (long long cx = c0[0]; cx <= c1[0]; ++cx) {
-          const std::size_t c = static_cast<std::size_t>((cz * dims[1] + cy) * dims[0] + cx);
-          for (std::size_t k = cellStart[c]; k < cellStart[c + 1]; ++k) {
-            const std::size_t j = cellPoints[k];
-            if (j == q) continue;
-            const double* xj = in.x + 3 * j;
-            const double dx = xj[0] - xq[0], dy = xj[1] - xq[1], dz = xj[2] - xq[2];
-            bool inside;
-            if (box) {
-              inside = std::fabs(dx) < halfBox[0] && std::fabs(dy) < halfBox[1] &&
-                       std::fabs(dz) < halfBox[2];
-            } else if (overlap) {
-              const double xi[3] = {dx, dy, dz};
-              inside = cellOverlapsHorizon(xi, in.cellEdge[j], h, in.rule.dimension);
-            } else {
-              const double d2 = dx * dx + dy * dy + dz * dz;
-              const double hj2 =
-                  in.unionOfHorizons ? std::max(h2, in.horizon[j] * in.horizon[j]) : h2;
-              inside = strict ? d2 < hj2 : d2 <= hj2;
-            }
-            if (!inside) continue;
-            if (in.omitBondsBetweenBlocks && in.blockId[j] != in.blockId[q]) continue;
-            if (filtered) {
-              bool cut = false;
-              for (const auto& f : *in.bondFilters)
-                if (f.cuts(xq, xj)) {
-                  cut = true;
-                  break;
-                }
-              if (cut) continue;
-            }
-            neighbors.push_back(j);
+    for (std::uint64_t cz = c0[2]; cz <= c1[2]; ++cz)
+      for (std::uint64_t cy = c0[1]; cy <= c1[1]; ++cy) {
+        // Keys of one row of cells (cx from c0 to c1) are consecutive in the sorted order.
+        const std::uint64_t last = keyOf(c1[0], cy, cz);
+        auto it = std::lower_bound(sorted.begin(), sorted.end(),
+                                   std::make_pair(keyOf(c0[0], cy, cz), std::size_t{0}));
+        for (; it != sorted.end() && it->first <= last; ++it) {
+          const std::size_t j = it->second;
+          if (j == q) continue;
+          const double* xj = in.x + 3 * j;
+          const double dx = xj[0] - xq[0], dy = xj[1] - xq[1], dz = xj[2] - xq[2];
+          bool inside;
+          if (box) {
+            inside = std::fabs(dx) < halfBox[0] && std::fabs(dy) < halfBox[1] &&
+                     std::fabs(dz) < halfBox[2];
+          } else if (overlap) {
+            const double xi[3] = {dx, dy, dz};
+            inside = cellOverlapsHorizon(xi, in.cellEdge[j], h, in.rule.dimension);
+          } else {
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            const double hj2 =
+                in.unionOfHorizons ? std::max(h2, in.horizon[j] * in.horizon[j]) : h2;
+            inside = strict ? d2 < hj2 : d2 <= hj2;
           }
+          if (!inside) continue;
+          if (in.omitBondsBetweenBlocks && in.blockId[j] != in.blockId[q]) continue;
+          if (filtered) {
+            bool cut = false;
+            for (std::size_t k = 0; k < in.bondFilters->size(); ++k)
+              if ((*in.bondFilters)[k].cuts(xq, xj)) {
+                cut = true;
+                if (in.bondFilterCuts) ++(*in.bondFilterCuts)[k];
+                break;
+              }
+            if (cut) continue;
+          }
+          neighbors.push_back(j);
         }
+      }
     offsets.push_back(static_cast<long long>(neighbors.size()));
   }
 }

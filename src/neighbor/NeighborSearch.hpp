@@ -15,6 +15,9 @@ struct NeighborSearchInput {
   bool omitBondsBetweenBlocks = false;
   NeighborhoodRule rule;
   const std::vector<BondFilter>* bondFilters = nullptr;
+  // If set (one entry per filter), each filter's count of the bonds it cut is added to it: a
+  // filter that cuts none is a warning (a pre-crack turned the wrong way).
+  std::vector<long long>* bondFilterCuts = nullptr;
   // Sphere rules: keep j if it is within the query's horizon or the query within j's (so that
   // lists are symmetric when horizons differ).
   bool unionOfHorizons = false;

@@ -1,7 +1,13 @@
 #include "output/OutputManager.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <numeric>
 
 #include "core/CollectiveError.hpp"
@@ -19,6 +25,40 @@ std::string formatTime(double t) {
 
 }  // namespace
 
+constexpr std::size_t kMaxExodusName = 32;  // libexodus's default name length
+
+std::string whyCannotCreate(const std::string& path) {
+  if (path.size() > kMaxOutputPath) {
+    return "the name is " + std::to_string(path.size()) +
+           " characters long; Peridot takes at most " + std::to_string(kMaxOutputPath) +
+           " (the Exodus library copies names into fixed buffers)";
+  }
+  const auto slash = path.find_last_of('/');
+  const std::string dir =
+      slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (base.empty() || base[0] == '.') {
+    return "\"Output Filename\" names a directory, not a file (give a base name, e.g. "
+           "\"results/run\")";
+  }
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) return "a directory of that name exists";
+    if (!S_ISREG(st.st_mode)) return "it exists and is not a regular file (a FIFO or device)";
+    if (::access(path.c_str(), W_OK) != 0) return std::strerror(errno);
+    return "";
+  }
+  if (::stat(dir.c_str(), &st) != 0) {
+    return "directory \"" + dir + "\": " + std::strerror(errno) +
+           (errno == ENOENT ? " (Peridot does not create directories)" : "");
+  }
+  if (!S_ISDIR(st.st_mode)) return "\"" + dir + "\" is not a directory";
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    return "directory \"" + dir + "\": " + std::strerror(errno);
+  }
+  return "";
+}
+
 OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::string>& blockNames,
                              int dimension,
                              const std::map<std::string, std::vector<long long>>& nodeSets,
@@ -26,6 +66,15 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     : topology_(topology), source_(source), timers_(timers) {
   // Group the streams into files.
   for (const auto& out : config.outputs) {
+    if (out.frequency == -1 && topology.rank == 0) {
+      // Peridigm's default when the key is missing: the stream writes nothing, not even the
+      // initial state. Said, since a forgotten key otherwise looks like a run without output.
+      std::cerr << "peridot: warning: " << out.path
+                << " -> Output Frequency: -1 (the default when the key is missing, as in "
+                   "Peridigm): this stream writes no file; set it to the number of steps "
+                   "between records"
+                << std::endl;
+    }
     if (out.frequency == -1 || out.variables.empty()) continue;
     bool onlyGlobal = true;
     for (const auto& v : out.variables) onlyGlobal = onlyGlobal && source.components(v) == 0;
@@ -33,13 +82,27 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     auto it =
         std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
     if (it == files_.end()) {
-      files_.push_back(File{path, {}, {}, {}, nullptr, onlyGlobal});
+      files_.push_back(File{path, out.path + " -> Output Filename", {}, {}, {}, nullptr, onlyGlobal});
       it = files_.end() - 1;
     }
     for (const auto& v : out.variables)
       if (std::find(it->variables.begin(), it->variables.end(), v) == it->variables.end())
         it->variables.push_back(v);
     it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
+  }
+  {
+    // Checked here, before any file is made and before the names reach the Exodus library
+    // (which copies a long name into a fixed buffer): every file of the run can be created.
+    std::string problem;
+    if (topology.rank == 0)
+      for (const auto& f : files_) {
+        const std::string why = whyCannotCreate(f.path);
+        if (!why.empty()) {
+          problem = f.deckPath + ": cannot create \"" + f.path + "\": " + why;
+          break;
+        }
+      }
+    throwIfAnyRank(problem, topology.comm);
   }
   dimension_ = dimension == 2 ? 2 : 3;
   distribution_ = std::make_unique<OutputDistribution>(topology);
@@ -72,6 +135,16 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     const char* axes[3] = {"X", "Y", "Z"};
     for (const auto& v : f.variables) {
       const int c = source.components(v);
+      const bool vector = c == 3 || (c == 0 && source.globalSize(v) == 3);
+      if (v.size() + (vector ? 1 : 0) > kMaxExodusName) {
+        // libexodus would cut the name to 32 characters (two labels could become one).
+        const std::string stream = f.deckPath.substr(0, f.deckPath.rfind(" -> "));
+        throw InputError(stream + " -> Output Variables -> " + v,
+                         "the name is " + std::to_string(v.size()) +
+                             " characters long; an Exodus variable name holds at most " +
+                             std::to_string(kMaxExodusName) +
+                             (vector ? " (with X, Y or Z appended)" : ""));
+      }
       if (c == 3) {
         for (int d = 0; d < dimension_; ++d) f.header.nodalNames.push_back(v + axes[d]);
       } else if (c == 1) {
@@ -129,30 +202,42 @@ void OutputManager::raiseErrors() {
 
 void OutputManager::open(const double* resumeTime, std::vector<std::string>* messages) {
   opened_ = true;
-  for (auto& f : files_) {
-    // Rank 0 decides between continuing and creating; every rank learns which (the mesh is
-    // written collectively).
-    int created = 1;
-    std::string message;
+  // Every file is created (or continued) before any mesh or record is written: a file that
+  // cannot be made stops the run before the others hold anything, and those made by this call
+  // are removed again (no file of 0 records is left behind).
+  std::vector<int> created(files_.size(), 1);
+  std::vector<std::string> said(files_.size());
+  for (std::size_t k = 0; k < files_.size(); ++k) {
+    File& f = files_[k];
     onRoot([&] {
       if (resumeTime != nullptr) {
         std::string whyNot;
         f.writer = ExodusWriter::resume(f.path, f.header, *resumeTime, whyNot);
         if (f.writer) {
-          created = 0;
-          message = "Output: continuing \"" + f.path + "\" after its record " +
+          created[k] = 0;
+          said[k] = "Output: continuing \"" + f.path + "\" after its record " +
                     std::to_string(f.writer->recordsWritten()) +
                     " (the last at time <= " + formatTime(*resumeTime) + ")";
           return;
         }
-        message = "Output: \"" + f.path + "\" not continued (" + whyNot + "); created anew";
+        said[k] = "Output: \"" + f.path + "\" not continued (" + whyNot + "); created anew";
       }
       f.writer = std::make_unique<ExodusWriter>(f.path, f.header);
     });
-    raiseErrors();
-    MPI_Bcast(&created, 1, MPI_INT, 0, topology_.comm);
-    if (created) writeMesh(f);
+  }
+  if (topology_.rank == 0 && !error_.empty()) {
+    for (std::size_t k = 0; k < files_.size(); ++k)
+      if (files_[k].writer && created[k]) {
+        files_[k].writer.reset();
+        std::remove(files_[k].path.c_str());
+      }
+  }
+  raiseErrors();
+  MPI_Bcast(created.data(), static_cast<int>(created.size()), MPI_INT, 0, topology_.comm);
+  for (std::size_t k = 0; k < files_.size(); ++k) {
+    if (created[k]) writeMesh(files_[k]);
     if (messages == nullptr) continue;
+    std::string& message = said[k];
     int length = static_cast<int>(message.size());
     MPI_Bcast(&length, 1, MPI_INT, 0, topology_.comm);
     message.resize(static_cast<std::size_t>(length));

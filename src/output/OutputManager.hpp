@@ -17,6 +17,13 @@
 
 namespace peridot {
 
+// Longest output path handed to the Exodus library (it copies names into fixed buffers).
+constexpr std::size_t kMaxOutputPath = 200;
+// "" if an output file can be created at `path` (checked without creating it: the directory
+// exists and is writable, the name is not a directory, FIFO or too long); else why not, with
+// the operating system's reason.
+std::string whyCannotCreate(const std::string& path);
+
 // Computes a named variable on the owned points (components interleaved) or a global value.
 class VariableSource {
  public:
@@ -62,6 +69,7 @@ class OutputManager {
   };
   struct File {
     std::string path;
+    std::string deckPath;  // "Output -> Output Filename" of the first stream writing it
     std::vector<std::string> variables;
     std::vector<Trigger> triggers;
     ExodusHeader header;

@@ -99,6 +99,7 @@ Neighbourhoods search(PointBatch owned, const GlobalFacts& g, const TopologyOpti
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
+  in.bondFilterCuts = opt.bondFilterCuts;
   in.unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox && g.differentHorizons;
   in.cellEdge = overlap ? ce.data() : nullptr;
   findNeighbors(in, queries, out.offsets, out.neighbors);

@@ -70,6 +70,7 @@ struct TopologyOptions {
   NeighborhoodRule rule;
   PeriodicBox periodic;
   const std::vector<BondFilter>* bondFilters = nullptr;
+  std::vector<long long>* bondFilterCuts = nullptr;  // per filter, this rank's cuts (added to)
   bool omitBondsBetweenBlocks = false;
   bool weightByBondCount = true;  // second Zoltan pass weighted by bonds per point
 };

@@ -24,7 +24,7 @@ set(PERIDOT_BADDECKS_WAVEINBAR "${PERIDOT_SHARED_DIR}/peridigm-cases/WaveInBar/W
 #                 [TRUNCATE <bytes>] [MAKE_DIR <dir>])
 # TRUNCATE copies the first <bytes> bytes of WaveInBar.g to cut.g in the work directory.
 function(peridot_baddeck name)
-  cmake_parse_arguments(PARSE_ARGV 1 B "" "DECK;ARG;EXPECT;ALSO;NP;CDL;TRUNCATE;MAKE_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 1 B "" "DECK;ARG;EXPECT;ALSO;NP;CDL;TRUNCATE;MAKE_DIR;R1;R2;FIFO;STATUS;STDOUT;OPTION" "")
   set(test baddeck_${name})
   set(args
     -DPERIDOT=$<TARGET_FILE:peridot>
@@ -57,6 +57,17 @@ function(peridot_baddeck name)
   endif()
   if(B_MAKE_DIR)
     list(APPEND args -DMAKE_DIR=${B_MAKE_DIR})
+  endif()
+  # Fuzzer findings: R1/R2 "<text>|<count>" replace %%R1%%/%%R2%% in the deck with <text>
+  # repeated <count> times (huge or deeply nested decks are made, not stored); FIFO makes a
+  # named pipe; STATUS 0 with STDOUT: the deck must run and print the fragment.
+  foreach(r R1 R2 FIFO STDOUT OPTION)
+    if(B_${r})
+      list(APPEND args "-D${r}=${B_${r}}")
+    endif()
+  endforeach()
+  if(DEFINED B_STATUS)
+    list(APPEND args -DEXPECT_STATUS=${B_STATUS})
   endif()
   add_test(NAME ${test} COMMAND ${CMAKE_COMMAND} ${args} -P ${PERIDOT_BADDECKS_DIR}/RunBadDeck.cmake)
   set(labels baddeck)
@@ -276,3 +287,75 @@ peridot_baddeck(data_loader DECK data_loader.yaml
   EXPECT [[Data Loader: Peridigm's ]] ALSO [[("Data Loader") is not supported by Peridot yet]])
 peridot_baddeck(peridigm_material_model DECK peridigm_material_model.yaml
   EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Elastic Plastic" is not supported by Peridot yet]])
+# ---- fuzzer findings (tools/fuzz, doc/robustness.md): each once crashed, hung or misled ----
+peridot_baddeck(fuzz_xml_nested_deep DECK fuzz_xml_nested_deep.xml
+  R1 [[<ParameterList name="a">|10000]] R2 [[</ParameterList>|10000]]
+  EXPECT [[deck file "fuzz_xml_nested_deep.xml" nests lists more than 64 deep]])
+peridot_baddeck(fuzz_yaml_nested_flow DECK fuzz_yaml_nested_flow.yaml
+  R1 [[{a: |5000]] R2 [[}|5000]]
+  EXPECT [[deck file "fuzz_yaml_nested_flow.yaml" nests lists more than 64 deep]])
+peridot_baddeck(fuzz_yaml_huge_key DECK fuzz_yaml_huge_key.yaml R1 [[K|10000000]]
+  EXPECT [[line 18 is 10000009 characters long; YAML decks are limited to 65536]])
+peridot_baddeck(fuzz_xml_huge_name DECK fuzz_xml_huge_name.xml R1 [[D|10000000]]
+  EXPECT [=[Materials -> My Material -> DDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDDD...[10000000 characters]: unknown parameter]=])
+peridot_baddeck(fuzz_output_filename_long DECK fuzz_output_filename_long.xml R1 [[b|300]]
+  EXPECT [[Output -> Output Filename: cannot create]] ALSO [[the name is 302 characters long]])
+peridot_baddeck(fuzz_output_filename_slash DECK fuzz_output_filename_slash.yaml
+  EXPECT [[Output -> Output Filename: cannot create "/.e": "Output Filename" names a directory]])
+peridot_baddeck(fuzz_output_dir_missing DECK fuzz_output_dir_missing.yaml
+  EXPECT [[Output -> Output Filename: cannot create "no_such_dir/bad.e": directory "no_such_dir": No such file or directory]])
+peridot_baddeck(fuzz_second_output_fails DECK fuzz_second_output_fails.yaml
+  EXPECT [[Output2 -> Output Filename: cannot create "no_such_dir/second.e"]])
+peridot_baddeck(fuzz_mesh_fifo DECK fuzz_mesh_fifo.xml FIFO fifo.txt
+  EXPECT [[Discretization -> Input Mesh File: cannot open text mesh "fifo.txt": it is a FIFO]])
+peridot_baddeck(fuzz_xml_int_overflow DECK fuzz_xml_int_overflow.xml
+  EXPECT [[Output -> Output Frequency: the integer 4294967297 does not fit type "int"]])
+peridot_baddeck(fuzz_nul_byte DECK fuzz_nul_byte.yaml
+  EXPECT [[deck file "fuzz_nul_byte.yaml" holds a NUL byte at line 18]])
+peridot_baddeck(fuzz_coincident_points DECK fuzz_coincident_points.xml
+  EXPECT [[points 1 and 9 lie at the same position (0.5, 0.5, 0.5)]])
+peridot_baddeck(fuzz_one_point DECK fuzz_one_point.xml
+  EXPECT [[the discretization has a single point]])
+peridot_baddeck(fuzz_huge_modulus DECK fuzz_huge_modulus.yaml
+  EXPECT [[Solver -> Final Time: ]] ALSO [[check the moduli, density and Fixed dt]])
+peridot_baddeck(fuzz_yaml_unclosed_bracket DECK fuzz_yaml_unclosed_bracket.yaml
+  EXPECT [=[as YAML: the '[' opened at line 18 column 16 is never closed (expected ']')]=])
+peridot_baddeck(fuzz_yaml_colon_in_value DECK fuzz_yaml_colon_in_value.yaml
+  EXPECT [[at line 18 column 23 ("Density: 7800.0: 3"): a value may not hold ": " unless it is quoted]])
+peridot_baddeck(fuzz_missing_mesh_hint DECK fuzz_missing_mesh_hint.xml
+  EXPECT [[cannot open text mesh "meshes/cube8.txt": No such file or directory (relative paths are taken from the working directory]])
+# A point at x = 1e300 once made the cell grid overflow (bonds of the other points lost, a
+# count that depended on the rank count). Gold: 10024 bonds, counted by brute force over the
+# 6x6x6 cube (horizon 2.5); the cube alone must give the same.
+foreach(np 1 2)
+  peridot_baddeck(fuzz_far_point_np${np} DECK fuzz_far_point.xml NP ${np} STATUS 0
+    STDOUT [[Points: 217, bonds (one-sided): 10024,]] EXPECT [[have no neighbour]])
+endforeach()
+peridot_baddeck(fuzz_far_point_near DECK fuzz_far_point_near.xml STATUS 0
+  STDOUT [[Points: 216, bonds (one-sided): 10024,]] EXPECT [[Done.]])
+
+# ---- command line and warnings (issue 15, item 3) ----
+# --check prints the set-up (points, bonds, stable time step, steps) and writes no file.
+peridot_baddeck(check_prints_setup DECK fuzz_far_point_near.xml OPTION --check STATUS 0
+  STDOUT [[Points: 216, bonds (one-sided): 10024, ranks: 1]]
+  EXPECT [[Time step: 1e-07 (Fixed dt), steps: 10]])
+# --check finds an output that cannot be created (it used to pass and the run to fail).
+peridot_baddeck(check_output_dir_missing DECK fuzz_output_dir_missing.yaml OPTION --check
+  EXPECT [[Output -> Output Filename: cannot create "no_such_dir/bad.e": directory "no_such_dir": No such file or directory]])
+# The 2D crack-line recipes of doc/deck-reference.md. Gold by hand: the 4x4 grid (horizon 1.5)
+# has 42 bond pairs (84 one-sided); the line y = 2 cuts 4 vertical and 6 diagonal pairs: 64.
+peridot_baddeck(crack_line_horizontal DECK crack_line_horizontal.yaml STATUS 0
+  STDOUT [[Points: 16, bonds (one-sided): 64,]] EXPECT [[Done.]])
+peridot_baddeck(crack_line_horizontal_wrong DECK crack_line_horizontal_wrong.yaml STATUS 0
+  STDOUT [[Points: 16, bonds (one-sided): 84,]]
+  EXPECT [[peridot: warning: Discretization -> Bond Filters -> Crack Line: the filter cuts no bond]])
+peridot_baddeck(output_frequency_missing DECK output_frequency_missing.yaml STATUS 0
+  STDOUT [[Done.]]
+  EXPECT [[peridot: warning: Output -> Output Frequency: -1 (the default when the key is missing, as in Peridigm): this stream writes no file]])
+peridot_baddeck(model_name_case DECK model_name_case.yaml
+  EXPECT [[Materials -> My Material -> Material Model: unknown material model "elastic" (did you mean "Elastic"?)]])
+add_test(NAME cli_version COMMAND peridot --version)
+set_tests_properties(cli_version PROPERTIES LABELS baddeck
+  PASS_REGULAR_EXPRESSION "peridot [0-9.]+\ncommit: [^\n]+\nbuild type: [A-Za-z]+")
+peridot_baddeck(output_label_too_long DECK output_label_too_long.yaml
+  EXPECT [[Output -> Output Variables -> Left_Force_Of_The_Notched_Specimen_Sum: the name is 38 characters long; an Exodus variable name holds at most 32]])
