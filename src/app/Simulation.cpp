@@ -17,6 +17,7 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
+#include "solvers/QuasiStatic.hpp"
 #include "solvers/StableTimeStep.hpp"
 
 namespace peridot {
@@ -293,7 +294,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
   const double ratio = (s.finalTime - s.initialTime) / dt_;
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
-  if (numSteps_ < 1) {
+  if (s.quasiStatic) checkImplicit();
+  if (numSteps_ < 1 && !s.quasiStatic) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
@@ -449,6 +451,10 @@ void Simulation::checkFinite(long long step, double time) {
 
 void Simulation::run() {
   const auto& s = config_.solver;
+  if (s.quasiStatic) {
+    runQuasiStatic();
+    return;
+  }
   // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
   if (resumed_ && firstStep_ > numSteps_) return;
   if (!outputs_) openOutputs();

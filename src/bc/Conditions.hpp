@@ -37,6 +37,10 @@ class BoundaryConditions {
   void applyBodyForce(double t, double* externalForceDensity, int numOwned);
 
   bool hasBodyForce() const { return hasBodyForce_; }
+  // Implicit solvers: sets u = the prescribed value at time t on every prescribed component, and
+  // marks those components (held[3 p + d] = 1) in `held` (owned, not cleared first).
+  void applyPrescribedDisplacement(double t, double* u);
+  void markPrescribed(double* held) const;
   // Points with a prescribed component, for reaction output and checks.
   std::size_t numExpressionEvaluations() const { return evaluations_; }
 

@@ -12,6 +12,7 @@
 #include "damage/DamageModel.hpp"
 #include "discretization/Discretization.hpp"
 #include "materials/MaterialModel.hpp"
+#include "solvers/QuasiStaticConfig.hpp"
 
 namespace peridot {
 
@@ -47,6 +48,8 @@ struct SolverConfig {
   double initialTime = 0.0, finalTime = 1.0;
   bool fixedDtGiven = false;
   double fixedDt = 0.0, safetyFactor = 1.0;
+  bool quasiStatic = false;  // a QuasiStatic list instead of Verlet
+  QuasiStaticConfig quasiStaticConfig;
 };
 
 struct OutputConfig {
