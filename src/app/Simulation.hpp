@@ -61,7 +61,7 @@ class Simulation {
   long long numSteps() const { return numSteps_; }
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
-  const QuasiStatic* quasiStatic() const { return quasiStatic_.get(); }
+  QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
 
  private:
   void openOutputs();

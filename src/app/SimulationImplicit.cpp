@@ -8,8 +8,9 @@ namespace peridot {
 
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
-    throw InputError(config_.restart.path, "Restart with the QuasiStatic solver is not supported "
-                                           "yet");
+    throw InputError(config_.restart.path,
+                     "Restart with the QuasiStatic solver is not supported "
+                     "yet");
   }
   if (contact_) {
     throw InputError(config_.contact.path,
@@ -44,8 +45,8 @@ void Simulation::runQuasiStatic() {
   if (!outputs_) openOutputs();
   if (rank_ == 0) {
     log_ << "Points: " << topology_.globalNumPoints
-         << ", bonds (one-sided): " << topology_.globalNumBonds
-         << ", ranks: " << topology_.numRanks << "\n";
+         << ", bonds (one-sided): " << topology_.globalNumBonds << ", ranks: " << topology_.numRanks
+         << "\n";
     if (planar_) log_ << "Planar (2D) run, thickness " << thickness_ << "\n";
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;

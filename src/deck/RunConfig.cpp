@@ -106,8 +106,8 @@ SolverConfig readSolver(ListReader s) {
                        "this solver is not supported by Peridot yet; use Verlet or QuasiStatic");
     }
   }
-  const std::string preconditioner = s.choice(
-      "Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
+  const std::string preconditioner =
+      s.choice("Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
   s.boolean("Initialize Predictor From Previous Solver", false);
   if (s.isSublist("QuasiStatic")) {
     if (s.has("Verlet")) {
@@ -115,9 +115,8 @@ SolverConfig readSolver(ListReader s) {
     }
     ListReader qs = s.sublist("QuasiStatic");
     sc.quasiStatic = true;
-    sc.quasiStaticConfig = readQuasiStatic(qs, sc.initialTime, sc.finalTime,
-                                           s.has("Final Time"), preconditioner,
-                                           verbose);
+    sc.quasiStaticConfig = readQuasiStatic(qs, sc.initialTime, sc.finalTime, s.has("Final Time"),
+                                           preconditioner, verbose);
     sc.initialTime = sc.quasiStaticConfig.times.front();
     sc.finalTime = sc.quasiStaticConfig.times.back();
     s.finish();

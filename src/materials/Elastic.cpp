@@ -273,8 +273,8 @@ void Elastic::addStiffness(const ModelState& s, const std::vector<int>& points,
       const double zeta = s.bondLength[b];
       const double vj = s.volume[j];
       const double t =
-          own * intact * (omega * dilatation_[i] * beta_[i] * zeta +
-                          intact * omega * alpha_[i] * (length - zeta));
+          own * intact *
+          (omega * dilatation_[i] * beta_[i] * zeta + intact * omega * alpha_[i] * (length - zeta));
       const double a = own * intact * intact * omega * alpha_[i];
       for (int d = 0; d < 3; ++d) n[3 * k + d] = Y[d] / length;
       const double* nb = &n[3 * k];

@@ -57,7 +57,7 @@ void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>&
 }
 
 void ElasticBondBased::addStiffness(const ModelState& s, const std::vector<int>& points,
-                                  TangentBlocks& K) const {
+                                    TangentBlocks& K) const {
   pairStiffness<false>(s, points, micromodulus_, K);
 }
 

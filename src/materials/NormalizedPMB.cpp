@@ -42,7 +42,7 @@ void NormalizedPMB::computeForce(const ModelState& s, const std::vector<int>& po
 }
 
 void NormalizedPMB::addStiffness(const ModelState& s, const std::vector<int>& points,
-                                  TangentBlocks& K) const {
+                                 TangentBlocks& K) const {
   pairStiffness<true>(s, points, micromodulus_, K);
 }
 

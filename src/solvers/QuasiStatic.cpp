@@ -255,8 +255,7 @@ int QuasiStatic::solveLinear(bool damped, bool precondition, int step, int itera
   const int iterations = solver->getNumIters();
   stats_.linearIterations += iterations;
   const auto x = X->getData(0);
-  for (std::size_t k = 0; k < increment_.size(); ++k)
-    increment_[k] = held_[k] != 0.0 ? 0.0 : x[k];
+  for (std::size_t k = 0; k < increment_.size(); ++k) increment_[k] = held_[k] != 0.0 ? 0.0 : x[k];
   return result == Belos::Converged ? iterations : -1;
 }
 

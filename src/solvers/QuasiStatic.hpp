@@ -32,6 +32,11 @@ class QuasiStatic {
   };
   const Statistics& statistics() const { return stats_; }
   Tangent& tangent() { return *tangent_; }
+  // For tests: evaluates the forces at y = x + u (collective) and returns ||R||; assembles the
+  // tangent at the state of the last evaluation. residual(): R = V (f + b), owned.
+  double evaluate(double time) { return evaluateResidual(time); }
+  void assembleTangent() { tangent_->assemble(c_.evaluator->state(), *c_.blocks, held_, 1.0); }
+  const std::vector<double>& residual() const { return residual_; }
 
  private:
   double evaluateResidual(double time);  // evaluate forces at y = x + u; returns ||R||
@@ -43,12 +48,12 @@ class QuasiStatic {
   QuasiStaticConfig config_;
   SolverContext c_;
   std::unique_ptr<Tangent> tangent_;
-  double* held_ = nullptr;            // overlap, 3 per point
-  std::vector<double> baseHeld_;      // owned: prescribed and planar z
-  std::vector<double> residual_;      // owned, 3 per point: R = V (f + b), 0 where held
-  std::vector<double> increment_;     // owned: the Newton direction
-  std::vector<double> start_;         // owned: u at the start of the step / line search
-  long long rankDeficient_ = 0;       // points held because no intact bond is left
+  double* held_ = nullptr;         // overlap, 3 per point
+  std::vector<double> baseHeld_;   // owned: prescribed and planar z
+  std::vector<double> residual_;   // owned, 3 per point: R = V (f + b), 0 where held
+  std::vector<double> increment_;  // owned: the Newton direction
+  std::vector<double> start_;      // owned: u at the start of the step / line search
+  long long rankDeficient_ = 0;    // points held because no intact bond is left
   Statistics stats_;
 };
 

@@ -38,14 +38,15 @@ QuasiStaticConfig readQuasiStatic(ListReader& qs, double initialTime, double fin
     }
     for (std::size_t k = 1; k < c.times.size(); ++k) {
       if (!(c.times[k] > c.times[k - 1])) {
-        throw InputError(qs.pathOf("Time Steps"),
-                         "the times must increase (" + formatNumber(c.times[k - 1]) + " then " +
-                             formatNumber(c.times[k]) + ")");
+        throw InputError(qs.pathOf("Time Steps"), "the times must increase (" +
+                                                      formatNumber(c.times[k - 1]) + " then " +
+                                                      formatNumber(c.times[k]) + ")");
       }
     }
   } else {
-    throw InputError(qs.path(), "give Number of Load Steps (with the solver's Final Time) or "
-                                "Time Steps");
+    throw InputError(qs.path(),
+                     "give Number of Load Steps (with the solver's Final Time) or "
+                     "Time Steps");
   }
   if (qs.has("Absolute Tolerance")) {
     c.absoluteTolerance = true;

@@ -71,9 +71,10 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
   std::vector<std::size_t> entries(3 * static_cast<std::size_t>(numRowPoints_));
   for (int a = 0; a < numRowPoints_; ++a)
     for (int d = 0; d < 3; ++d)
-      entries[3 * a + d] = 3 * static_cast<std::size_t>(blocks_.offsets[a + 1] - blocks_.offsets[a]);
-  auto graph = Teuchos::rcp(new CrsGraph(overlapMap3_, overlapMap3_,
-                                         Teuchos::ArrayView<const std::size_t>(entries)));
+      entries[3 * a + d] =
+          3 * static_cast<std::size_t>(blocks_.offsets[a + 1] - blocks_.offsets[a]);
+  auto graph = Teuchos::rcp(
+      new CrsGraph(overlapMap3_, overlapMap3_, Teuchos::ArrayView<const std::size_t>(entries)));
   for (int a = 0; a < numRowPoints_; ++a) {
     rowColumns_.clear();
     for (auto k = blocks_.offsets[a]; k < blocks_.offsets[a + 1]; ++k)
@@ -84,8 +85,8 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
   graph->fillComplete(topology.ownedMap3, topology.ownedMap3);
   overlap_ = Teuchos::rcp(new CrsMatrix(graph));
   overlap_->fillComplete(topology.ownedMap3, topology.ownedMap3);
-  export_ = Teuchos::rcp(new Tpetra::Export<LocalOrdinal, GlobalOrdinal>(overlapMap3_,
-                                                                           topology.ownedMap3));
+  export_ = Teuchos::rcp(
+      new Tpetra::Export<LocalOrdinal, GlobalOrdinal>(overlapMap3_, topology.ownedMap3));
 }
 
 void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks,

@@ -62,3 +62,17 @@ peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Pa
 # A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
                   Plate2D.e exact_2d.comp 600)
+
+# QuasiStatic (Peridigm's XML deck form): the same nodal results at 1, 2 and 3 ranks within the
+# solver tolerances of quasistatic.comp (not bitwise: see there).
+add_test(NAME ranks_QuasiStaticBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/QuasiStaticBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/QuasiStaticBar
+    -DDECK=QuasiStaticBar.xml -DOUTPUT=QuasiStaticBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/quasistatic.comp
+    "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+set_tests_properties(ranks_QuasiStaticBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
