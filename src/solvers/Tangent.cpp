@@ -18,8 +18,8 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
       throw InputError(solverPath,
                        "material \"" + b.materialName + "\" of block " + b.name +
                            " has no tangent stiffness, so the implicit solvers cannot use it; "
-                           "tangents exist for \"Elastic\", \"Elastic Bond Based\" and the "
-                           "normalized PMB (use Verlet for the others)");
+                           "tangents exist for \"Elastic\", \"Elastic Bond Based\" and "
+                           "\"Normalized PMB\" (use Verlet for the others)");
     }
     if (b.damage && b.damage->bondLaw().kind != BondLaw::Kind::Linear) {
       throw InputError(solverPath, "block " + b.name +

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/Simulation.hpp"
+#include "core/Error.hpp"
 #include "deck/Deck.hpp"
 #include "solvers/QuasiStatic.hpp"
 
@@ -111,6 +112,7 @@ TEST(QuasiStaticTangent, MatchesFiniteDifferences) {
     bool planar;
   };
   const Case cases[] = {{"Elastic Bond Based", "", false},
+                        {"Normalized PMB", "", false},
                         {"Elastic", "", false},
                         {"Elastic Bond Based", "Plane Stress", true},
                         {"Elastic", "Plane Strain", true},
@@ -198,6 +200,49 @@ TEST(QuasiStatic, BarInteriorStrainIsTheAppliedStrain) {
   // strain of the interior deviates by a few percent (2.7% here); 5% bounds that surface effect
   // while a wrong tangent, load or boundary condition (strain off by its own order) fails.
   EXPECT_NEAR(slope / strain, 1.0, 0.05);
+}
+
+// The message of the exception `make` throws, or "" if none.
+template <class Exception, class Make>
+std::string errorOf(Make make) {
+  try {
+    make();
+  } catch (const Exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(QuasiStatic, MaterialWithoutTangentIsNamed) {
+  std::string deck = tangentDeck("Elastic", "", false);
+  deck.replace(deck.find("\"Elastic\""), 9, "\"Linearized LPS\"");
+  const std::string message = errorOf<InputError>([&] { makeSimulation(deck); });
+  EXPECT_NE(message.find("\"M\" of block block_1"), std::string::npos) << message;
+  EXPECT_NE(message.find("has no tangent"), std::string::npos) << message;
+}
+
+TEST(QuasiStatic, UnsupportedSolversAreRefused) {
+  std::string deck = tangentDeck("Elastic", "", false);
+  const std::string nox = deck.substr(0, deck.find("  Solver:")) +
+                          "  Solver:\n    Final Time: 1.0\n    NOXQuasiStatic:\n"
+                          "      Number of Load Steps: 1\n";
+  std::string message = errorOf<InputError>([&] { makeSimulation(nox); });
+  EXPECT_NE(message.find("NOXQuasiStatic"), std::string::npos) << message;
+  EXPECT_NE(message.find("not supported"), std::string::npos) << message;
+  const std::string adaptive = deck + "      Adaptive Load-Stepping:\n        Verbose: true\n";
+  message = errorOf<InputError>([&] { makeSimulation(adaptive); });
+  EXPECT_NE(message.find("Adaptive Load-Stepping"), std::string::npos) << message;
+}
+
+TEST(QuasiStatic, NonConvergenceNamesStepIterationsAndResidual) {
+  std::string deck = barDeck(1e-3, 4, "Block 3x3");
+  deck += "      Maximum Solver Iterations: 1\n";
+  auto sim = makeSimulation(deck);
+  const std::string message = errorOf<RunError>([&] { sim->run(); });
+  EXPECT_NE(message.find("load step 1"), std::string::npos) << message;
+  EXPECT_NE(message.find("did not converge in 1 Newton iterations"), std::string::npos) << message;
+  EXPECT_NE(message.find("residual"), std::string::npos) << message;
+  EXPECT_NE(message.find("Number of Load Steps"), std::string::npos) << message;
 }
 
 }  // namespace
