@@ -417,7 +417,15 @@ void QuasiStatic::run() {
     if (c_.observer) c_.observer(static_cast<long long>(step), time);
   }
   stats_.tangentBytes = tangent_->bytes();
+  double tangentBytes = 0;
+  MPI_Allreduce(&stats_.tangentBytes, &tangentBytes, 1, MPI_DOUBLE, MPI_SUM, c_.comm);
   if (c_.rank == 0) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "Tangent memory (all ranks): %.1f MB = %.0f bytes per bond (one-sided)\n",
+                  tangentBytes / 1e6,
+                  tangentBytes / static_cast<double>(std::max(1LL, t.globalNumBonds)));
+    log << text;
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
     log << "QuasiStatic: " << stats_.newtonIterations << " Newton iterations, "
