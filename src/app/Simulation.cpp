@@ -19,6 +19,7 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
+#include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
 
@@ -364,7 +365,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                          formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
   }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
-  if (numSteps_ < 1) {
+  if (s.quasiStatic) checkImplicit();
+  if (numSteps_ < 1 && !s.quasiStatic) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
@@ -622,6 +624,10 @@ void Simulation::reportSetup() {
 }
 
 void Simulation::run() {
+  if (config_.solver.quasiStatic) {
+    runQuasiStatic();
+    return;
+  }
   // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
   if (resumed_ && firstStep_ > numSteps_) return;
   reportSetup();

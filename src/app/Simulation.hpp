@@ -25,6 +25,8 @@
 
 namespace peridot {
 
+class QuasiStatic;
+
 class Simulation {
  public:
   // Collective. Throws InputError for anything wrong with the deck or its mesh.
@@ -63,6 +65,8 @@ class Simulation {
   double timeStep() const { return dt_; }
   long long numSteps() const { return numSteps_; }
   double stableTimeStepEstimate() const { return stableDt_; }
+  // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
+  QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
 
  private:
   void openOutputs();
@@ -81,6 +85,9 @@ class Simulation {
   void resume();
   void writeCheckpoint(long long step);
   void searchContact();
+  // Implicit solvers (SimulationImplicit.cpp): checks at set-up, and the QuasiStatic run.
+  void checkImplicit();
+  void runQuasiStatic();
 
   RunConfig config_;
   MPI_Comm comm_;
@@ -110,6 +117,7 @@ class Simulation {
   std::unique_ptr<Checkpoint> checkpoint_;  // with Restart
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
+  std::unique_ptr<QuasiStatic> quasiStatic_;
   double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_
   long long firstStep_ = 1;  // the first step run() takes (after a checkpoint's step)
   long long lastStep_ = 0;   // the last step completed

@@ -156,4 +156,19 @@ void BoundaryConditions::applyBodyForce(double t, double* b, int numOwned) {
   }
 }
 
+void BoundaryConditions::applyPrescribedDisplacement(double t, double* u) {
+  for (auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::PrescribedDisplacement) continue;
+    const int d = c.config.coordinate;
+    for (int p : c.points) u[3 * p + d] = evaluate(c, p, t);
+  }
+}
+
+void BoundaryConditions::markPrescribed(double* held) const {
+  for (const auto& c : conditions_) {
+    if (c.config.kind != ConditionConfig::Kind::PrescribedDisplacement) continue;
+    for (int p : c.points) held[3 * p + c.config.coordinate] = 1.0;
+  }
+}
+
 }  // namespace peridot

@@ -44,6 +44,10 @@ class BoundaryConditions {
   // a message naming the condition and point where a value is not finite (empty if none).
   std::string applyInitialTemperature(double t0, double* temperature);
   std::string applyPrescribedTemperature(double t, double* temperature, double* change);
+  // Implicit solvers: sets u = the prescribed value at time t on every prescribed component, and
+  // marks those components (held[3 p + d] = 1) in `held` (owned, not cleared first).
+  void applyPrescribedDisplacement(double t, double* u);
+  void markPrescribed(double* held) const;
   // Points with a prescribed component, for reaction output and checks.
   std::size_t numExpressionEvaluations() const { return evaluations_; }
 

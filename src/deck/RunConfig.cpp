@@ -105,19 +105,34 @@ void readBoundaryConditions(ListReader bc, RunConfig& config) {
 SolverConfig readSolver(ListReader s) {
   SolverConfig sc;
   sc.path = s.path();
-  s.boolean("Verbose", false);
+  const bool verbose = s.boolean("Verbose", false);
   sc.initialTime = s.number("Initial Time", 0.0);
   sc.finalTime = s.number("Final Time", 1.0);
   if (!(sc.finalTime > sc.initialTime)) {
     throw InputError(s.pathOf("Final Time"), "must be larger than the Initial Time");
   }
-  for (const char* other : {"QuasiStatic", "NOXQuasiStatic", "Implicit", "ImplicitDiffusion"}) {
+  for (const char* other : {"NOXQuasiStatic", "Implicit", "ImplicitDiffusion"}) {
     if (s.isSublist(other)) {
-      throw InputError(s.pathOf(other), "this solver is not supported by Peridot yet; use Verlet");
+      throw InputError(s.pathOf(other),
+                       "this solver is not supported by Peridot yet; use Verlet or QuasiStatic");
     }
   }
-  if (s.has("Peridigm Preconditioner")) s.string("Peridigm Preconditioner");
+  const std::string preconditioner =
+      s.choice("Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
   s.boolean("Initialize Predictor From Previous Solver", false);
+  if (s.isSublist("QuasiStatic")) {
+    if (s.has("Verlet")) {
+      throw InputError(s.pathOf("Verlet"), "one solver list per Solver: QuasiStatic or Verlet");
+    }
+    ListReader qs = s.sublist("QuasiStatic");
+    sc.quasiStatic = true;
+    sc.quasiStaticConfig = readQuasiStatic(qs, sc.initialTime, sc.finalTime, s.has("Final Time"),
+                                           preconditioner, verbose);
+    sc.initialTime = sc.quasiStaticConfig.times.front();
+    sc.finalTime = sc.quasiStaticConfig.times.back();
+    s.finish();
+    return sc;
+  }
   ListReader v = s.sublist("Verlet");
   if (v.has("Fixed dt")) {
     sc.fixedDtGiven = true;

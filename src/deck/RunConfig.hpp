@@ -12,6 +12,7 @@
 #include "damage/DamageModel.hpp"
 #include "discretization/Discretization.hpp"
 #include "materials/MaterialModel.hpp"
+#include "solvers/QuasiStaticConfig.hpp"
 
 namespace peridot {
 
@@ -55,6 +56,8 @@ struct SolverConfig {
   // Verlet -> Stable Time Step Estimate: Peridigm's row-sum bound (default) or the Lanczos
   // estimate of the true Verlet limit (solvers/VerletLimit.hpp).
   bool verletLimitEstimate = false;
+  bool quasiStatic = false;  // a QuasiStatic list instead of Verlet
+  QuasiStaticConfig quasiStaticConfig;
 };
 
 struct OutputConfig {

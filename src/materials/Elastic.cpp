@@ -5,6 +5,7 @@
 
 #include "materials/BondOptions.hpp"
 #include "materials/ShearCorrection.hpp"
+#include "solvers/TangentBlocks.hpp"
 
 namespace peridot {
 
@@ -204,6 +205,88 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
     s.forceDensity[3 * i] = f0;
     s.forceDensity[3 * i + 1] = f1;
     s.forceDensity[3 * i + 2] = f2;
+  }
+}
+
+// Tangent of the linear LPS force, family by family. Family i exerts on i the sum over its bonds
+// of p_b = t_b V_j n_b, and on each neighbour j the reaction -(V_i / V_j) p_b, with
+//   t_b = own (1-d) omega (beta_i theta_i zeta + (1-d) alpha_i e_b),  e_b = |Y_b| - zeta,
+//   theta_i = c/m sum_b own omega (1-d) zeta e_b V_j   (own: the bond is in i's horizon).
+// With n_b = Y_b/|Y_b|, g_b = c/m own omega (1-d) zeta V_j (d theta/d y_j = g_b n_b^T) and
+// h_b = own (1-d) omega beta_i zeta (d t_b/d theta):
+//   d p_b / d y_j(c) = delta_bc D_b + V_j(b) h_b g_c n_b n_c^T,
+//   D_b = V_j [own (1-d)^2 omega alpha_i n n^T + t_b (I - n n^T)/|Y_b|],
+// and d/d y_i is minus the sum over c (translation invariance). Stiffness K = -V_row d f/d y;
+// every family's contribution is symmetric.
+void Elastic::addStiffness(const ModelState& s, const std::vector<int>& points,
+                           TangentBlocks& K) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  std::vector<double> n, D, g, h;  // per bond of the family, reused
+  for (int i : points) {
+    const std::int64_t first = offsets[i], count = offsets[i + 1] - first;
+    const double m = weightedVolume_[i];
+    if (!(m > 0) || count == 0) continue;
+    n.assign(3 * count, 0.0);
+    D.assign(9 * count, 0.0);
+    g.assign(count, 0.0);
+    h.assign(count, 0.0);
+    const double vi = s.volume[i];
+    double G[3] = {0, 0, 0}, S[3] = {0, 0, 0};  // sum g_c n_c; sum V_j h_b n_b
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::int64_t b = first + k;
+      const int j = neighbors[b];
+      double Y[3];
+      for (int d = 0; d < 3; ++d) Y[d] = s.y[3 * j + d] - s.y[3 * i + d];
+      const double length = std::sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+      if (!(length > 0)) continue;  // no direction: no force, no stiffness (as the force loop)
+      const double own = s.bondSides ? (s.bondSides[b] & 1) : 1.0;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double zeta = s.bondLength[b];
+      const double vj = s.volume[j];
+      const double t =
+          own * intact *
+          (omega * dilatation_[i] * beta_[i] * zeta + intact * omega * alpha_[i] * (length - zeta));
+      const double a = own * intact * intact * omega * alpha_[i];
+      for (int d = 0; d < 3; ++d) n[3 * k + d] = Y[d] / length;
+      const double* nb = &n[3 * k];
+      for (int r = 0; r < 3; ++r)
+        for (int e = 0; e < 3; ++e)
+          D[9 * k + 3 * r + e] =
+              vj * (a * nb[r] * nb[e] + t * ((r == e ? 1.0 : 0.0) - nb[r] * nb[e]) / length);
+      g[k] = thetaFactor_ / m * own * omega * intact * zeta * vj;
+      h[k] = own * intact * omega * beta_[i] * zeta;
+      for (int d = 0; d < 3; ++d) {
+        G[d] += g[k] * nb[d];
+        S[d] += vj * h[k] * nb[d];
+      }
+    }
+    // Row i: K_i,j(c) = -V_i (D_c + g_c S n_c^T), K_ii = -sum_c K_i,j(c).
+    double Dsum[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (std::int64_t k = 0; k < count; ++k) {
+      const int j = neighbors[first + k];
+      K.add(i, j, -vi, &D[9 * k]);
+      K.addOuter(i, j, -vi * g[k], S, &n[3 * k]);
+      for (int r = 0; r < 9; ++r) Dsum[r] += D[9 * k + r];
+    }
+    K.add(i, i, vi, Dsum);
+    K.addOuter(i, i, vi, S, G);
+    // Rows j(b): K_jj += V_i D_b, K_ji -= V_i D_b, K_j,j(c) += V_i V_j h_b g_c n_b n_c^T,
+    // K_ji -= V_i V_j h_b n_b G^T.
+    for (std::int64_t k = 0; k < count; ++k) {
+      const int j = neighbors[first + k];
+      const double vj = s.volume[j];
+      K.add(j, j, vi, &D[9 * k]);
+      K.add(j, i, -vi, &D[9 * k]);
+      const double coupling = vi * vj * h[k];
+      if (coupling == 0.0) continue;
+      for (std::int64_t l = 0; l < count; ++l) {
+        if (g[l] == 0.0) continue;
+        K.addOuter(j, neighbors[first + l], coupling * g[l], &n[3 * k], &n[3 * l]);
+      }
+      K.addOuter(j, i, -coupling, &n[3 * k], G);
+    }
   }
 }
 

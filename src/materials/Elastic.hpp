@@ -27,6 +27,9 @@ class Elastic : public MaterialModel {
   std::vector<std::string> fieldsToSyncAfterPrecompute() const override { return {kDilatation}; }
   void precompute(const ModelState& state, const std::vector<int>& points) override;
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
+  TangentReach tangentReach() const override { return TangentReach::Family; }
+  void addStiffness(const ModelState& state, const std::vector<int>& points,
+                    TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
   std::vector<std::string> outputFields() const override { return {kWeightedVolume, kDilatation}; }

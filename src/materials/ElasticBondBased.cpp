@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 #include "materials/BondBasedKernels.hpp"
+#include "materials/BondBasedTangent.hpp"
 
 namespace peridot {
 
@@ -76,6 +77,11 @@ void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& p
 
 void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>& points) {
   pairForce<false>(s, points, micromodulus_);
+}
+
+void ElasticBondBased::addStiffness(const ModelState& s, const std::vector<int>& points,
+                                    TangentBlocks& K) const {
+  pairStiffness<false>(s, points, micromodulus_, K);
 }
 
 void ElasticBondBased::storedEnergyDensity(const ModelState& s, const std::vector<int>& points,

@@ -23,6 +23,9 @@ class ElasticBondBased : public MaterialModel {
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
+  TangentReach tangentReach() const override { return TangentReach::Bond; }
+  void addStiffness(const ModelState& state, const std::vector<int>& points,
+                    TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
   void stiffnessSum(const ModelState& state, const std::vector<int>& points,

@@ -53,6 +53,15 @@ struct ModelState {
   const double* thermalStrain = nullptr;
 };
 
+// The point-level 3x3 blocks of the tangent stiffness (solvers/Tangent.hpp).
+struct TangentBlocks;
+
+// Which entries of the tangent a point's bond family fills: none (the model has no tangent),
+// the row of the point and the columns of its family (bond-based: f_i depends on y_i and its
+// neighbours only), or every (row, column) pair of the family (state-based: the family's
+// dilatation couples all its members).
+enum class TangentReach { None, Bond, Family };
+
 // How a material reads its elastic constants: in 3D, or in plane stress / plane strain.
 enum class PlaneMode { ThreeD, PlaneStress, PlaneStrain };
 
@@ -80,6 +89,12 @@ class MaterialModel {
   // model: the bond-based spring constant 18 K / (pi delta^4) / |xi| times the neighbour volume.
   virtual void stiffnessSum(const ModelState& state, const std::vector<int>& points,
                             double* sum) const;
+  // The tangent for implicit solvers: which entries it fills, and their values. addStiffness adds
+  // K_ac = -V_a d f_a / d y_c (the stiffness in force units, symmetric for the elastic models) of
+  // the families of `points` into `K`, at the current coordinates and bond damage; called after
+  // an evaluation (precomputed fields such as the dilatation are current).
+  virtual TangentReach tangentReach() const { return TangentReach::None; }
+  virtual void addStiffness(const ModelState&, const std::vector<int>&, TangentBlocks&) const {}
   // Node fields the model maintains that a user may output (e.g. "Dilatation").
   virtual std::vector<std::string> outputFields() const { return {}; }
   // Node fields that carry history from step to step (e.g. the plastic multiplier "Lambda"):

@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 #include "materials/BondBasedKernels.hpp"
+#include "materials/BondBasedTangent.hpp"
 
 namespace peridot {
 
@@ -38,6 +39,11 @@ void NormalizedPMB::initialize(const ModelState& s, const std::vector<int>& poin
 
 void NormalizedPMB::computeForce(const ModelState& s, const std::vector<int>& points) {
   pairForce<true>(s, points, micromodulus_);
+}
+
+void NormalizedPMB::addStiffness(const ModelState& s, const std::vector<int>& points,
+                                 TangentBlocks& K) const {
+  pairStiffness<true>(s, points, micromodulus_, K);
 }
 
 void NormalizedPMB::storedEnergyDensity(const ModelState& s, const std::vector<int>& points,

@@ -75,3 +75,17 @@ peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
 # critical stretch: bitwise equal at 1-4 ranks.
 peridot_identical(ThermalCrack ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ThermalCrack
                   ThermalCrack.yaml ThermalCrack.e exact_thermal.comp 0)
+
+# QuasiStatic (Peridigm's XML deck form): the same nodal results at 1, 2 and 3 ranks within the
+# solver tolerances of quasistatic.comp (not bitwise: see there).
+add_test(NAME ranks_QuasiStaticBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/QuasiStaticBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/QuasiStaticBar
+    -DDECK=QuasiStaticBar.xml -DOUTPUT=QuasiStaticBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/quasistatic.comp
+    "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+set_tests_properties(ranks_QuasiStaticBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)

@@ -1,0 +1,41 @@
+#pragma once
+// What a solver other than the explicit Verlet loop needs of a set-up run (Simulation builds it):
+// the problem's topology, fields, models, conditions and outputs, and the run's fields as raw
+// owned/overlap arrays.
+#include <mpi.h>
+
+#include <functional>
+#include <iosfwd>
+#include <vector>
+
+#include "bc/Conditions.hpp"
+#include "core/Timers.hpp"
+#include "evaluator/ModelEvaluator.hpp"
+#include "fields/FieldManager.hpp"
+#include "output/OutputManager.hpp"
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+struct SolverContext {
+  MPI_Comm comm = MPI_COMM_WORLD;
+  int rank = 0;
+  std::ostream* log = nullptr;
+  Timers* timers = nullptr;
+  const Topology* topology = nullptr;
+  FieldManager* fields = nullptr;
+  std::vector<Block>* blocks = nullptr;
+  const std::vector<int>* blockIndexOfPoint = nullptr;
+  ModelEvaluator* evaluator = nullptr;
+  BoundaryConditions* conditions = nullptr;
+  OutputManager* outputs = nullptr;
+  bool planar = false;
+  // Overlap arrays, 3 per point: reference and current coordinates, displacement, velocity,
+  // acceleration, internal force density; body force density (null without a body force).
+  double *x = nullptr, *y = nullptr, *u = nullptr, *v = nullptr, *a = nullptr, *f = nullptr,
+         *b = nullptr;
+  const double* volume = nullptr;
+  std::function<void(long long, double)> observer;
+};
+
+}  // namespace peridot

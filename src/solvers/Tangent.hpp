@@ -1,0 +1,49 @@
+#pragma once
+// The distributed tangent stiffness of an implicit solver: a Tpetra::CrsMatrix with one row per
+// owned degree of freedom (3 per point) and 3x3 blocks per coupled pair of points. Each rank
+// fills the blocks of its owned points' bond families on the overlap points (TangentBlocks), and
+// an Export (ADD) sums the rows that belong to other ranks into their owners' rows: a family of
+// a state-based model couples every pair of its members, so rows of ghost points get entries
+// too, and an owned row's columns reach two horizons (points this rank does not hold).
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <vector>
+
+#include "evaluator/Block.hpp"
+#include "parallel/Topology.hpp"
+#include "solvers/TangentBlocks.hpp"
+
+namespace peridot {
+
+using CrsMatrix = Tpetra::CrsMatrix<double, LocalOrdinal, GlobalOrdinal>;
+
+class Tangent {
+ public:
+  // Builds the pattern from the bond lists and each block's material reach. Throws InputError
+  // naming the block and material when a material has no tangent (or the deck asks for a
+  // feature the tangent does not cover), with `solverPath` as the deck path.
+  Tangent(const Topology& topology, const std::vector<Block>& blocks,
+          const std::string& solverPath);
+  // Fills the blocks at the current state (after an evaluation) and assembles the owned matrix.
+  // `held` (3 per overlap point, ghosts refreshed): 1 for a degree of freedom held fixed; its
+  // row and column are zeroed and its diagonal set to `heldDiagonal`.
+  void assemble(const ModelState& state, const std::vector<Block>& blocks, const double* held,
+                double heldDiagonal);
+  Teuchos::RCP<CrsMatrix> matrix() const { return owned_; }
+  // The point-level blocks of the last assembly (overlap rows), for tests and diagnostics.
+  const TangentBlocks& blocks() const { return blocks_; }
+  // Bytes of the point-level blocks and the two Tpetra matrices (values and indices).
+  double bytes() const;
+
+ private:
+  const Topology& topology_;
+  int numRowPoints_ = 0;  // owned + ghosts
+  TangentBlocks blocks_;
+  Teuchos::RCP<const Map> overlapMap3_;
+  Teuchos::RCP<CrsMatrix> overlap_, owned_;
+  Teuchos::RCP<Tpetra::Export<LocalOrdinal, GlobalOrdinal>> export_;
+  std::vector<LocalOrdinal> rowColumns_;  // scratch: one matrix row's local columns
+  std::vector<double> rowValues_;
+};
+
+}  // namespace peridot
