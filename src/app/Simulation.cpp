@@ -222,6 +222,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                                                 config_.discretization.influenceFunction, timers_);
   if (planar_) evaluator_->setPlanar(thickness_);
   evaluator_->setPartialVolumes(config_.discretization.partialVolumes);
+  evaluator_->setBondFilters(&config_.discretization.bondFilters);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
 

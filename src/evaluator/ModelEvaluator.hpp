@@ -28,6 +28,9 @@ class ModelEvaluator {
   // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
   // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
   void setPartialVolumes(bool partial) { partialVolumes_ = partial; }
+  // The bond filters of the discretization (kept by the caller), for the models that pair
+  // neighbours. Before initialize().
+  void setBondFilters(const std::vector<BondFilter>* filters) { state_.bondFilters = filters; }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();

@@ -41,6 +41,9 @@ struct ModelState {
   BondLaw bondLaw;
   // The deck's influence function ("One", "Conical", ...); `influence` holds its values.
   std::string influenceFunction = "One";
+  // The discretization's bond filters (pre-cracks), for models that form interactions between
+  // neighbours (continuum kinematics); null when none.
+  const std::vector<BondFilter>* bondFilters = nullptr;
 };
 
 // How a material reads its elastic constants: in 3D, or in plane stress / plane strain.
@@ -85,6 +88,9 @@ class MaterialModel {
   // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
   // the bonds instead of two; the same bits as the separate damage loop).
   virtual bool fusesCriticalStretch() const { return false; }
+  // Whether the model must apply its block's damage itself (it also breaks state the damage
+  // pass does not know of): it then accepts only a fusable damage model (Critical Stretch).
+  virtual bool requiresFusedCriticalStretch() const { return false; }
   // Young's modulus and Poisson's ratio of the material as the deck defines it (for a bond-based
   // material, nu is the fixed value of its plane mode); 0 where a model does not define them.
   virtual double youngsModulus() const { return 0.0; }
