@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <sstream>
 
 #include "PlanarProblem.hpp"
 #include "SerialProblem.hpp"
@@ -348,6 +349,35 @@ TEST(ContinuumKinematics, HomogeneousEnergies2D) {
 
 TEST(ContinuumKinematics, HomogeneousEnergies3D) {
   homogeneousEnergies(3, {""}, {2.015, 3.015}, {0.1, 0.3});
+}
+
+// Paper 004 eq. (3.3): s_c from G_c, checked by hand with the paper's V8 values (2D: Table 1,
+// E = 210 GPa, nu = 0.3, G_c = 140 N/m, delta = 15.075 mm; K the plane-stress in-plane bulk
+// modulus E/(2(1-nu)) = 150 GPa, G = 80.77 GPa).
+TEST(ContinuumKinematics, FractureEnergyGivesThePaperCriticalStretch) {
+  const double kPi = 3.14159265358979323846;
+  Teuchos::ParameterList p;
+  p.set("Fracture Energy", 140.0);
+  ListReader r(p, "Damage Models -> D");
+  CriticalStretch d(r);
+  auto m = cki("Plane Stress", 210e9, 0.3, -1, -1, -1);
+  std::ostringstream log;
+  d.bind(*m, 0.015075, "block_1", log);
+  const double G = 210e9 / 2.6, K = 210e9 / 1.4;
+  const double expected =
+      std::sqrt(140.0 / (0.015075 * (6 / kPi * G + 16 / (9 * kPi * kPi) * (K - 2 * G))));
+  EXPECT_NEAR(d.fusableCriticalStretch(), expected, 1e-12 * expected);
+  EXPECT_NEAR(expected, 2.4703e-4, 0.0001e-4);  // the number itself (python, by hand)
+  // 3D, Table 1: G_c = 500 N/m, delta = 50.25 mm.
+  Teuchos::ParameterList p3;
+  p3.set("Fracture Energy", 500.0);
+  ListReader r3(p3, "Damage Models -> D");
+  CriticalStretch d3(r3);
+  d3.bind(*cki("", 210e9, 0.3, -1, -1, -1), 0.05025, "block_1", log);
+  const double K3 = 210e9 / (3 * 0.4);
+  EXPECT_NEAR(d3.fusableCriticalStretch(),
+              std::sqrt(500.0 / (0.05025 * (3 * G + std::pow(0.75, 4) * (K3 - 5 * G / 3)))),
+              1e-9 * d3.fusableCriticalStretch());
 }
 
 }  // namespace
