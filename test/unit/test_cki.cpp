@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -378,6 +379,82 @@ TEST(ContinuumKinematics, FractureEnergyGivesThePaperCriticalStretch) {
   EXPECT_NEAR(d3.fusableCriticalStretch(),
               std::sqrt(500.0 / (0.05025 * (3 * G + std::pow(0.75, 4) * (K3 - 5 * G / 3)))),
               1e-9 * d3.fusableCriticalStretch());
+}
+
+// Study (ctest -L long): interactions and bytes per point against delta/dx on periodic lattices
+// (bulk points), and the force evaluation time per point against PMB and LPS at the same delta.
+// Figures in bench/RESULTS.md. Stored: bonds 16 B (neighbour 4, reference length 8, damage 4),
+// pairs 8 B (two 16-bit slots, tracked bond j-k 4); triples are enumerated on the fly and would
+// need at least 8 B each if stored (pair index 4, slot 2, padding).
+TEST(ContinuumKinematics, DISABLED_InteractionCostStudy) {
+  std::printf(
+      "  dim  delta/dx    N1      N2 (pairs)   N3 (triples)   stored B/pt   triples "
+      "B/pt   CKI/PMB   CKI/LPS   bonds-only CKI/PMB\n");
+  auto timePerPoint = [](Problem& pr, int repeats) {
+    // The fastest of 5 batches: the machine is shared, the minimum is the least disturbed.
+    pr.evaluator->evaluate(0.0);
+    double best = 1e300;
+    for (int batch = 0; batch < 5; ++batch) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int r = 0; r < repeats; ++r) pr.evaluator->evaluate(0.0);
+      const auto t1 = std::chrono::steady_clock::now();
+      best = std::min(best, std::chrono::duration<double>(t1 - t0).count() / repeats);
+    }
+    return best / pr.topology.numOwned;
+  };
+  auto make = [](int dim, double delta, std::shared_ptr<MaterialModel> m) {
+    const int n = 2 * static_cast<int>(std::ceil(delta)) + 3;
+    PeriodicBox box;
+    for (int d = 0; d < dim; ++d) {
+      box.periodic[d] = true;
+      box.lower[d] = -0.5;
+      box.upper[d] = n - 0.5;
+    }
+    if (dim == 2)
+      return std::unique_ptr<Problem>(
+          std::make_unique<PlanarProblem>(square(n), delta, m, 1.0, 1.0, nullptr, box));
+    return std::make_unique<Problem>(cube(n), delta, m, nullptr, box);
+  };
+  auto other = [](const std::string& model, const std::string& mode) {
+    Teuchos::ParameterList p;
+    p.set("Material Model", model);
+    p.set("Density", 1.0);
+    if (model == "Elastic") {
+      p.set("Young's Modulus", 1.0);
+      p.set("Poisson's Ratio", 0.3);
+    } else {
+      p.set("Bulk Modulus", 1.0);
+    }
+    if (!mode.empty()) p.set(mode, true);
+    ListReader r(p, "Materials -> M");
+    return std::shared_ptr<MaterialModel>(createMaterial(r));
+  };
+  for (int dim : {2, 3})
+    for (double delta : dim == 2 ? std::vector<double>{2.015, 3.015, 4.015, 6.015}
+                                 : std::vector<double>{2.015, 3.015}) {
+      const std::string mode = dim == 2 ? "Plane Stress" : "";
+      auto m = cki(mode, 1.0, 0.3, -1, -1, -1);
+      auto pr = make(dim, delta, m);
+      const int i = 0;
+      const double n1 = pr->topology.numNeighbors(i);
+      const double n2 =
+          static_cast<double>(m->lists().pairOffsets[i + 1] - m->lists().pairOffsets[i]);
+      const double n3 =
+          dim == 3 ? static_cast<double>(m->countTriples(pr->evaluator->state(), i)) : 0.0;
+      const double stored = 16 * n1 + 8 * n2 + 8;
+      const int repeats = dim == 3 && delta > 3 ? 1 : 10;
+      const double tCki = timePerPoint(*pr, repeats);
+      auto bonds = make(dim, delta, cki(mode, 1.0, 0.3, 1, 0, 0));
+      const double tBonds = timePerPoint(*bonds, repeats);
+      auto pmb = make(dim, delta, other("Elastic Bond Based", mode));
+      const double tPmb = timePerPoint(*pmb, 50);
+      auto lps = make(dim, delta, other("Elastic", mode));
+      const double tLps = timePerPoint(*lps, 50);
+      std::printf(
+          "  %d    %6.3f   %5.0f   %10.0f   %12.0f   %11.0f   %11.0f   %7.1f   %7.1f   "
+          "%7.1f\n",
+          dim, delta, n1, n2, n3, stored, 8 * n3, tCki / tPmb, tCki / tLps, tBonds / tPmb);
+    }
 }
 
 }  // namespace
