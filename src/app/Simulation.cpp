@@ -338,12 +338,9 @@ void Simulation::checkDimension() {
                            "with Dimension: 2) or remove the plane setting");
     }
   }
-  if (!planar_) return;
-  if (config_.contact.enabled) {
-    throw InputError(config_.contact.path,
-                     "contact in a 2D discretization is not supported yet (its spring constant "
-                     "is the 3D one)");
-  }
+  // Planar contact: the points lie in z = 0, so the search is in-plane and the pair forces have
+  // no z component; the force law is paper 004's eq. (2.34) as written, 9 C (l_c - d)/(pi
+  // delta^5) V_j, with the points' volumes (area x thickness).
 }
 
 void Simulation::openOutputs() {
