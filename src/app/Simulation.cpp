@@ -300,6 +300,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   }
   origin_ = s.initialTime;
   if (config_.restart.enabled) {
+    // The continuum-kinematics material keeps damage history the checkpoint does not hold
+    // (the bonds between neighbours each point tracks): refuse rather than lose it.
+    for (const auto& b : blocks_)
+      if (b.damage && b.material->requiresFusedCriticalStretch())
+        throw InputError(config_.restart.path, "restart of block " + b.name +
+                                                   " (continuum-kinematics material with "
+                                                   "damage) is not supported yet");
     checkpoint_ = std::make_unique<Checkpoint>(config_.restart, topology_, *fields_);
     if (checkpoint_->exists()) resume();
   }
