@@ -82,6 +82,27 @@ double criticalStretchFromFractureEnergy(const MaterialModel& material, double h
     formulaUsed = "LPS bond term, sqrt(pi G0 J3 / (8 mu J4))" + where;
     return std::sqrt(kPi * G0 * J(3) / (8.0 * mu * J(4)));
   }
+  if (family == "continuum kinematics") {
+    // Paper 004 eq. (3.3) (Madenci and Oterkus), with G the shear modulus and K the bulk
+    // modulus (3D) or the in-plane bulk modulus of the plane mode (2D); omega = 1 only.
+    if (w != "One") {
+      throw InputError(path,
+                       "the continuum-kinematics fracture-energy formula (paper 004 eq. "
+                       "3.3) assumes the influence function \"One\"");
+    }
+    const double E = material.youngsModulus(), nu = material.poissonsRatio();
+    const double G = E / (2.0 * (1.0 + nu));
+    if (!planar) {
+      const double K = material.bulkModulus();
+      formulaUsed = "CKI 3D, sqrt(G0 / (delta (3G + (3/4)^4 (K - 5G/3))))";
+      return std::sqrt(G0 / (delta * (3.0 * G + std::pow(0.75, 4) * (K - 5.0 * G / 3.0))));
+    }
+    const double K = inPlaneBulkModulus(E, nu, mode);
+    formulaUsed =
+        "CKI 2D, sqrt(G0 / (delta (6G/pi + 16/(9 pi^2) (K - 2G)))), K = " + std::to_string(K) +
+        where;
+    return std::sqrt(G0 / (delta * (6.0 / kPi * G + 16.0 / (9.0 * kPi * kPi) * (K - 2.0 * G))));
+  }
   throw InputError(
       path, "no fracture-energy formula for a " + family + " material; give Critical Stretch");
 }

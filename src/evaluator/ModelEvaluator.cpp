@@ -63,6 +63,13 @@ void ModelEvaluator::initialize() {
                                                   "smooth force law; the " +
                                                   b.material->family() + " material does not");
     }
+    if (b.damage && b.material->requiresFusedCriticalStretch() &&
+        !(b.damage->fusableCriticalStretch() > 0)) {
+      throw InputError("Blocks -> " + b.name, "the " + b.material->family() +
+                                                  " material supports only the \"Critical "
+                                                  "Stretch\" damage model, not \"" +
+                                                  b.damageName + "\"");
+    }
   }
   if (influenceFunction_ != "One" || partialVolumes_) {
     std::vector<double>& omega = fields_.bond("Influence_Function");
@@ -239,8 +246,8 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
 bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {
   // Only when nothing between the damage and force phases reads this block's bond damage: the
   // bond-based models have no precompute, and each point's bonds are its own entries.
-  return fuseCriticalStretch_ && b.damage && b.damage->fusableCriticalStretch() > 0 &&
-         b.material->fusesCriticalStretch();
+  return (fuseCriticalStretch_ || b.material->requiresFusedCriticalStretch()) && b.damage &&
+         b.damage->fusableCriticalStretch() > 0 && b.material->fusesCriticalStretch();
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {

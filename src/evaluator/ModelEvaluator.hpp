@@ -31,6 +31,9 @@ class ModelEvaluator {
     partialVolumes_ = partial;
     state_.partialVolumes = partial;
   }
+  // The bond filters of the discretization (kept by the caller), for the models that pair
+  // neighbours. Before initialize().
+  void setBondFilters(const std::vector<BondFilter>* filters) { state_.bondFilters = filters; }
   // Declares fields, fills bond influence, initializes the models. Reference coordinates,
   // volumes and horizons must already be in their fields (owned and ghost).
   void initialize();

@@ -51,6 +51,9 @@ struct ModelState {
   // ghosted. A bond's extension at end i is |Y| - |xi| - alpha_i Delta T_i |xi| (Peridigm).
   const double* temperatureChange = nullptr;
   const double* thermalStrain = nullptr;
+  // The discretization's bond filters (pre-cracks), for models that form interactions between
+  // neighbours (continuum kinematics); null when none.
+  const std::vector<BondFilter>* bondFilters = nullptr;
 };
 
 // The point-level 3x3 blocks of the tangent stiffness (solvers/Tangent.hpp).
@@ -116,6 +119,9 @@ class MaterialModel {
   // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
   // the bonds instead of two; the same bits as the separate damage loop).
   virtual bool fusesCriticalStretch() const { return false; }
+  // Whether the model must apply its block's damage itself (it also breaks state the damage
+  // pass does not know of): it then accepts only a fusable damage model (Critical Stretch).
+  virtual bool requiresFusedCriticalStretch() const { return false; }
   // Young's modulus and Poisson's ratio of the material as the deck defines it (for a bond-based
   // material, nu is the fixed value of its plane mode); 0 where a model does not define them.
   virtual double youngsModulus() const { return 0.0; }
