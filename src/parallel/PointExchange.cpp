@@ -1,6 +1,7 @@
 #include "parallel/PointExchange.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <climits>
 #include <cstring>
 #include <limits>
@@ -158,6 +159,17 @@ HaloBatch exchangeHalo(const PointBatch& owned, double reach, const std::vector<
     }
   std::vector<double> boxes(6 * static_cast<std::size_t>(size));
   MPI_Allgather(box, 6, MPI_DOUBLE, boxes.data(), 6, MPI_DOUBLE, comm);
+
+  // The box tests below run on rounded sums (b + reach), while the search measures distances as
+  // rounded differences: a neighbour at almost exactly the reach can pass the one and fail the
+  // other. Widening by far more than the rounding (1e-12 of the coordinates' scale) sends a few
+  // more candidates, which the search rejects, and never drops one, so the bonds cannot depend
+  // on where the rank boundaries fall.
+  double scale = reach;
+  for (double v : boxes)
+    if (std::fabs(v) < std::numeric_limits<double>::max()) scale = std::max(scale, std::fabs(v));
+  for (int d = 0; d < 3; ++d) scale = std::max(scale, std::fabs(boxLength ? boxLength[d] : 0.0));
+  reach += 1e-12 * scale;
 
   std::vector<Outgoing> outgoing;
   std::vector<int> nearRanks;
