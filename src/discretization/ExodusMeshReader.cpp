@@ -27,11 +27,25 @@ constexpr std::size_t kNameBufferSize = NC_MAX_NAME + 1;
 // writes) must have to hold all the data its header declares, or -1 for other formats (netCDF-4's
 // HDF5 layer detects truncation itself) and headers this cannot follow. Needed because the netCDF
 // library reads the missing tail of a truncated classic file as zeros, without an error.
+// kBrokenHeader when a length in the header itself runs past the end of the file: netCDF would
+// then allocate and copy what the damaged length says (a flipped bit took it 15 s and gigabytes),
+// so such a file is refused before netCDF opens it.
+constexpr long long kBrokenHeader = -2;
 class ClassicHeader {
  public:
-  explicit ClassicHeader(const std::string& fileName) : in_(fileName, std::ios::binary) {}
+  explicit ClassicHeader(const std::string& fileName) : in_(fileName, std::ios::binary) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(fileName, ec);
+    fileSize_ = ec ? 0 : static_cast<unsigned long long>(size);
+  }
 
   long long dataEnd() {
+    const long long end = walk();
+    return broken_ ? kBrokenHeader : end;
+  }
+
+ private:
+  long long walk() {
     char magic[4] = {0, 0, 0, 0};
     if (!in_.read(magic, 4) || magic[0] != 'C' || magic[1] != 'D' || magic[2] != 'F') return -1;
     const int version = magic[3];
@@ -88,7 +102,6 @@ class ClassicHeader {
     return end;
   }
 
- private:
   static constexpr unsigned long long kDimensionTag = 0x0A;
   static constexpr unsigned long long kVariableTag = 0x0B;
   static constexpr unsigned long long kAttributeTag = 0x0C;
@@ -122,8 +135,20 @@ class ClassicHeader {
     for (int i = 0; i < bytes; ++i) value = (value << 8) | buffer[i];
     return value;
   }
+  // Whether `bytes` more fit between the read position and the end of the file (seekg past the
+  // end does not fail by itself).
+  bool fits(unsigned long long bytes) {
+    const auto at = in_.tellg();
+    if (at < 0 || bytes > fileSize_ || static_cast<unsigned long long>(at) > fileSize_ - bytes) {
+      broken_ = true;
+      ok_ = false;
+    }
+    return ok_;
+  }
   void skip(unsigned long long bytes) {
-    if (ok_ && !in_.seekg(static_cast<std::streamoff>((bytes + 3) / 4 * 4), std::ios::cur)) {
+    if (bytes > fileSize_) bytes = fileSize_ + 1;  // no overflow in the rounding below
+    if (ok_ && fits((bytes + 3) / 4 * 4) &&
+        !in_.seekg(static_cast<std::streamoff>((bytes + 3) / 4 * 4), std::ios::cur)) {
       ok_ = false;
     }
   }
@@ -133,6 +158,11 @@ class ClassicHeader {
     const unsigned long long found = read(4);
     const unsigned long long count = read(sizeBytes_);
     if (found != tag && !(found == 0 && count == 0)) ok_ = false;
+    // Every element takes at least 4 bytes of the header.
+    if (ok_ && count > fileSize_ / 4) {
+      broken_ = true;
+      ok_ = false;
+    }
     return ok_ ? count : 0;
   }
   void skipAttributes() {
@@ -140,13 +170,16 @@ class ClassicHeader {
     for (unsigned long long a = 0; a < count && ok_; ++a) {
       skipName();
       const int type = static_cast<int>(read(4));
-      skip(read(sizeBytes_) * typeSize(type));
+      const unsigned long long n = read(sizeBytes_);
+      skip(n > fileSize_ ? fileSize_ + 1 : n * typeSize(type));
     }
   }
 
   std::ifstream in_;
+  unsigned long long fileSize_ = 0;
   int sizeBytes_ = 4;
   bool ok_ = true;
+  bool broken_ = false;
 };
 
 // Why fileName cannot be read as an Exodus file, or "" when it looks fine.
@@ -157,6 +190,11 @@ std::string openProblem(const std::string& fileName) {
   std::FILE* f = std::fopen(fileName.c_str(), "rb");
   if (f == nullptr) return std::strerror(errno);
   std::fclose(f);
+  const long long needed = ClassicHeader(fileName).dataEnd();
+  if (needed == kBrokenHeader) {
+    return "not a readable Exodus (netCDF) file, or a truncated or corrupt one (a length in its "
+           "netCDF header runs past the end of the file)";
+  }
   int ncid = -1;
   const int status = nc_open(fileName.c_str(), NC_NOWRITE, &ncid);
   if (status != NC_NOERR) {
@@ -164,7 +202,6 @@ std::string openProblem(const std::string& fileName) {
            nc_strerror(status) + ")";
   }
   nc_close(ncid);
-  const long long needed = ClassicHeader(fileName).dataEnd();
   const auto size = std::filesystem::file_size(fileName, ec);
   if (!ec && needed > 0 && static_cast<long long>(size) < needed) {
     return "the file is truncated (" + std::to_string(size) + " bytes where its header needs " +

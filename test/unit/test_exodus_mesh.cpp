@@ -474,6 +474,26 @@ TEST(ExodusMeshReader, TruncatedFilesAreRejected) {
   }
 }
 
+TEST(ExodusMeshReader, HeaderLengthPastTheEndIsRejectedBeforeNetcdfReadsIt) {
+  // A fuzzer's bit flip in a header length once made netCDF's open allocate and copy for 15 s
+  // per rank (a hang at 2 ranks). The first dimension's name length (bytes 16-19 of a classic
+  // file: magic, record count, dimension tag, dimension count) set beyond the file's size must be
+  // refused by Peridot's own header walk, before netCDF sees it.
+  std::ifstream in(kCases + "/WaveInBar/WaveInBar.g", std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 20000u);
+  ASSERT_EQ(std::string(bytes.data(), 3), "CDF");
+  ASSERT_EQ(bytes[11], 0x0A);  // the dimension list's tag
+  bytes[16] = 0x7F;
+  TempFile file(tempPath("flipped.g"));
+  {
+    std::ofstream out(file.path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  expectInputError([&] { peridot::readExodusMesh(file.path, kDeckPath); },
+                   {kDeckPath, file.path, "runs past the end of the file"});
+}
+
 TEST(ExodusMeshReader, NotAnExodusFile) {
   TempFile file(tempPath("text.g"));
   {
