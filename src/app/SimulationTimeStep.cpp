@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/Simulation.hpp"
+#include "core/Error.hpp"
 #include "solvers/StableTimeStep.hpp"
 #include "solvers/VerletLimit.hpp"
 
@@ -21,6 +22,13 @@ void Simulation::estimateStableTimeStep() {
   }
   stableDt_ = peridigmDt_;
   if (!config_.solver.verletLimitEstimate) return;
+  for (const auto& b : blocks_)
+    if (b.material->advancesHistory()) {
+      throw InputError(config_.solver.path + " -> Verlet -> Stable Time Step Estimate",
+                       "\"Verlet Limit\" probes the stiffness with extra force evaluations, "
+                       "which would advance the history of block " +
+                           b.name + "'s material; use the default estimate (\"Peridigm\")");
+    }
 
   // K v by central differences of the internal force about the reference configuration, no
   // bond breaking: the probe displacement is 1e-6 of the smallest horizon at its largest

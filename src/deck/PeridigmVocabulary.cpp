@@ -44,7 +44,6 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
-      "Lambda",
       "Cauchy_Stress",
       "Unrotated_Cauchy_Stress",
       "Deformation_Gradient",
@@ -59,8 +58,6 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
       "Jacobian_Determinant",
       "Critical_Stretch",
       "Surface_Correction_Factor",
-      "Temperature",
-      "Temperature_Change",
       "Concentration",
       "Flux_Divergence",
       "Fluid_Pressure_U",

@@ -44,6 +44,7 @@ class ElasticPlastic : public MaterialModel {
     return {kWeightedVolume, kDilatation, kLambda};
   }
   std::vector<std::string> historyNodeFields() const override { return {kLambda}; }
+  bool advancesHistory() const override { return true; }
   std::string family() const override { return "elastic-plastic state-based"; }
 
   static constexpr const char* kWeightedVolume = "Weighted_Volume";

@@ -26,33 +26,7 @@ std::unique_ptr<MaterialModel> createMaterial(ListReader& params) {
                                                   "Apply Shear Correction Factor",
                                                   "Thermal Expansion Coefficient",
                                                   "Compute Partial Stress"};
-  // Peridigm's models that Peridot does not have: named as unsupported rather than unknown.
-  static const char* const unsupported[] = {"Pals",
-                                            "Linear LPS Partial Volume",
-                                            "Elastic Partial Volume",
-                                            "Elastic Correspondence",
-                                            "Elastic Plastic Correspondence",
-                                            "Isotropic Hardening Correspondence",
-                                            "Viscoplastic Needleman Correspondence",
-                                            "Elastic Hypoelastic Correspondence",
-                                            "Elastic Plastic Hypoelastic Correspondence",
-                                            "Isotropic Hardening Hypoelastic Correspondence",
-                                            "Elastic Bond Associated Correspondence",
-                                            "Elastic Plastic Bond Associated Correspondence",
-                                            "Isotropic Hardening Bond Associated Correspondence",
-                                            "Multiphysics Elastic",
-                                            "Diffusion",
-                                            "Vector Poisson",
-                                            "LCM",
-                                            "Elastic Correspondence Partial Stress",
-                                            "Pressure Dependent Elastic Plastic"};
-  if (params.has("Material Model")) {
-    const std::string name = params.string("Material Model");
-    for (const char* u : unsupported)
-      if (name == u && !MaterialRegistry::find(name))
-        throw InputError(params.pathOf("Material Model"),
-                         "Peridigm's material model \"" + name + "\" is not supported by Peridot");
-  }
+  // A Peridigm model Peridot lacks is named as such by the registry (deck/PeridigmVocabulary).
   const auto& entry = MaterialRegistry::lookup(params, "Material Model", "material model", common);
   auto material = entry.create(params);
   params.finish();

@@ -103,6 +103,9 @@ class MaterialModel {
   // Node fields that carry history from step to step (e.g. the plastic multiplier "Lambda"):
   // the checkpoint saves and restores their owned values. (Bond fields are always saved.)
   virtual std::vector<std::string> historyNodeFields() const { return {}; }
+  // True when computeForce advances a history (plastic or viscous state) by one step: such a
+  // model cannot be probed by extra force evaluations (the "Verlet Limit" time step estimate).
+  virtual bool advancesHistory() const { return false; }
   // A tag shared by models whose points may be bonded to each other.
   virtual std::string family() const = 0;
   // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it

@@ -17,6 +17,7 @@ class Viscoelastic : public MaterialModel {
  public:
   explicit Viscoelastic(ListReader& params);
   double density() const override { return density_; }
+  bool advancesHistory() const override { return true; }
   double bulkModulus() const override { return constants_.bulkModulus; }
   double youngsModulus() const override { return constants_.youngsModulus; }
   double poissonsRatio() const override { return constants_.poissonsRatio; }
