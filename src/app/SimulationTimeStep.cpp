@@ -19,6 +19,7 @@ void Simulation::estimateStableTimeStep() {
     for (const auto& b : blocks_)
       b.material->stiffnessSum(evaluator_->state(), b.points, stiffness.data());
     peridigmDt_ = stableTimeStep(topology_, density_.data(), stiffness.data());
+    if (!(peridigmDt_ > 0)) explainZeroTimeStep(stiffness.data());
   }
   stableDt_ = peridigmDt_;
   if (!config_.solver.verletLimitEstimate) return;

@@ -104,8 +104,13 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
     const double r = in.unionOfHorizons ? reach : searchReach(in.rule, h);
     std::uint64_t c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {
-      c0[d] = cellIndex(xq[d] - r, d);
-      const double upper = xq[d] + r;
+      // The range is padded by far more than the rounding of xq +- r, which can land a hair
+      // inside a neighbour at almost exactly the reach (the distance test, on the difference,
+      // keeps it): without the pad the cells scanned, and so the bonds, depended on where the
+      // cell grid starts, i.e. on the rank count.
+      const double pad = 1e-12 * (std::fabs(xq[d]) + r);
+      c0[d] = cellIndex(xq[d] - r - pad, d);
+      const double upper = xq[d] + r + pad;
       c1[d] = std::isnan(upper) ? maxCell[d] : std::min(maxCell[d], cellIndex(upper, d));
     }
     for (std::uint64_t cz = c0[2]; cz <= c1[2]; ++cz)

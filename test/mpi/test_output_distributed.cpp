@@ -316,8 +316,9 @@ TEST(OutputDistributedErrors, AFileThatCannotBeCreatedIsNamedWithTheReason) {
   try {
     run(MPI_COMM_WORLD, stem, 3, {0.0}, 0.0);
     ADD_FAILURE() << "no error";
-  } catch (const RunError& e) {
-    // Every rank gets the message, with the file and the OS reason.
+  } catch (const InputError& e) {
+    // Checked before any file is created (the output path is a deck error now), on every rank,
+    // with the file and the OS reason.
     const std::string what = e.what();
     EXPECT_NE(what.find(stem + ".e"), std::string::npos) << what;
     EXPECT_NE(what.find("No such file or directory"), std::string::npos) << what;
