@@ -108,7 +108,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
       // inside a neighbour at almost exactly the reach (the distance test, on the difference,
       // keeps it): without the pad the cells scanned, and so the bonds, depended on where the
       // cell grid starts, i.e. on the rank count.
-      const double pad = 1e-12 * (std::fabs(xq[d]) + r);
+      // Capped at 1e-3 of the reach: for coordinates beyond 1e11 reaches (a degenerate mesh) the
+      // scan must stay within a few cells, not sweep the clamped grid.
+      const double pad = std::min(1e-14 * (std::fabs(xq[d]) + r), 1e-3 * r);
       c0[d] = cellIndex(xq[d] - r - pad, d);
       const double upper = xq[d] + r + pad;
       c1[d] = std::isnan(upper) ? maxCell[d] : std::min(maxCell[d], cellIndex(upper, d));

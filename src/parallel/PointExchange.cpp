@@ -1,8 +1,8 @@
 #include "parallel/PointExchange.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -162,14 +162,15 @@ HaloBatch exchangeHalo(const PointBatch& owned, double reach, const std::vector<
 
   // The box tests below run on rounded sums (b + reach), while the search measures distances as
   // rounded differences: a neighbour at almost exactly the reach can pass the one and fail the
-  // other. Widening by far more than the rounding (1e-12 of the coordinates' scale) sends a few
+  // other. Widening by far more than the rounding (1e-14 of the coordinates' scale, at most 1e-3 of
+  // the reach, so that a degenerate mesh does not send everything) sends a few
   // more candidates, which the search rejects, and never drops one, so the bonds cannot depend
   // on where the rank boundaries fall.
   double scale = reach;
   for (double v : boxes)
     if (std::fabs(v) < std::numeric_limits<double>::max()) scale = std::max(scale, std::fabs(v));
   for (int d = 0; d < 3; ++d) scale = std::max(scale, std::fabs(boxLength ? boxLength[d] : 0.0));
-  reach += 1e-12 * scale;
+  reach += std::min(1e-14 * scale, 1e-3 * reach);
 
   std::vector<Outgoing> outgoing;
   std::vector<int> nearRanks;
