@@ -314,6 +314,8 @@ peridot_baddeck(fuzz_coincident_points DECK fuzz_coincident_points.xml
   EXPECT [[points 1 and 9 lie at the same position (0.5, 0.5, 0.5)]])
 peridot_baddeck(fuzz_one_point DECK fuzz_one_point.xml
   EXPECT [[the discretization has a single point]])
+peridot_baddeck(fuzz_mesh_scaled_1e200 DECK fuzz_mesh_scaled_1e200.xml
+  EXPECT [[Blocks: no point has a neighbour: the horizon (smallest 1.5) is smaller than the point spacing]])
 peridot_baddeck(fuzz_huge_modulus DECK fuzz_huge_modulus.yaml
   EXPECT [[Solver -> Final Time: ]] ALSO [[check the moduli, density and Fixed dt]])
 peridot_baddeck(fuzz_yaml_unclosed_bracket DECK fuzz_yaml_unclosed_bracket.yaml
