@@ -64,11 +64,11 @@ const typename Registry<Base>::Entry& Registry<Base>::lookup(
     for (const auto& n : names()) known += (known.empty() ? "\"" : ", \"") + n + "\"";
     const bool peridigms =
         isIn(peridigmMaterialModels(), name) || isIn(peridigmDamageModels(), name);
-    throw InputError(params.pathOf(kindKey), (peridigms ? "the Peridigm " + kind + " \"" + name +
-                                                              "\" is not supported by Peridot yet"
-                                                        : "unknown " + kind + " \"" + name + "\"" +
-                                                              didYouMean(name, names())) +
-                                                 "; Peridot knows " + known);
+    throw InputError(
+        params.pathOf(kindKey),
+        (peridigms ? "the Peridigm " + kind + " \"" + name + "\" is not supported by Peridot yet"
+                   : "unknown " + kind + " \"" + name + "\"" + didYouMean(name, names())) +
+            "; Peridot knows " + known);
   }
   // Unknown keys first: a misspelt key must be named as such, not reported as a missing one.
   for (const auto& key : params.keys()) {

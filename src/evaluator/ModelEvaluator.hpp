@@ -66,8 +66,8 @@ class ModelEvaluator {
   bool fusesCriticalStretch(const Block& b) const;
 
   float* bondDamage_ = nullptr;  // null on a rank without bonds
-  bool hasDamage_ = false;         // some block has a damage model (the same on every rank)
-  bool thermal_ = false;           // some block's material expands (the same on every rank)
+  bool hasDamage_ = false;       // some block has a damage model (the same on every rank)
+  bool thermal_ = false;         // some block's material expands (the same on every rank)
   bool fuseCriticalStretch_ = true;
   bool partialVolumes_ = false;
   std::vector<std::string> syncAfterPrecompute_;

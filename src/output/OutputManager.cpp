@@ -82,7 +82,8 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     auto it =
         std::find_if(files_.begin(), files_.end(), [&](const File& f) { return f.path == path; });
     if (it == files_.end()) {
-      files_.push_back(File{path, out.path + " -> Output Filename", {}, {}, {}, nullptr, onlyGlobal});
+      files_.push_back(
+          File{path, out.path + " -> Output Filename", {}, {}, {}, nullptr, onlyGlobal});
       it = files_.end() - 1;
     }
     for (const auto& v : out.variables)

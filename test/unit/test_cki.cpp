@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <random>
 #include <sstream>
 
