@@ -108,7 +108,13 @@ void DivergenceMonitor::fail(double time) const {
   if (dt_ > stableDt_) {
     msg += ": use a smaller Fixed dt (or Safety Factor instead)";
   } else {
-    msg += ": look for a model parameter, condition or contact stiffness out of range";
+    // Below the estimate, either the scene is wrong or the estimate does not bound it: Peridigm's
+    // takes the spring constant of a full neighbourhood, which a state-based model exceeds
+    // where neighbourhoods are cut short (a horizon comparable to the body).
+    msg +=
+        ": look for a model parameter, condition or contact stiffness out of range, or a "
+        "horizon comparable to the body (Peridigm's estimate assumes full neighbourhoods; "
+        "Stable Time Step Estimate \"Verlet Limit\" measures the limit)";
   }
   msg += ". The output files hold the records written before this step";
   throw RunError(msg).markCollective();
