@@ -41,7 +41,9 @@ def deck_text(name, model, horizon, n_yz, dt, steps, options):
     solver = ("      Fixed dt: %r\n" % dt) if dt else ("      Safety Factor: 1.0\n")
     if options.get("estimate"):
         solver += '      Stable Time Step Estimate: "%s"\n' % options["estimate"]
-    final = steps * dt if dt else T_END
+    # Half a step past the last one: Peridot, as Peridigm, takes floor((t_f - t_0) / dt) steps,
+    # and the quotient of steps * dt by dt may round to just below `steps`.
+    final = (steps + 0.5) * dt if dt else T_END
     return f"""Peridigm:
   Discretization:
     Type: PdQuickGrid

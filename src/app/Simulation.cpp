@@ -204,6 +204,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   double* horizon = fields_->node("Horizon", 1);
   fields_->markPosition("Model_Coordinates");
   fields_->markPosition("Coordinates");
+  fields_->markCurrentPosition("Coordinates");
+  for (const std::string& source : config_.discretization.periodic.deformation)
+    boxDeformation_.emplace_back(source, std::vector<std::string>{"t"},
+                                 config_.discretization.periodic.deformationPath);
+  deformPeriodicBox();
   for (int k = 0; k < topology_.numOverlap; ++k) {
     for (int d = 0; d < 3; ++d)
       x_[3 * k + d] = y_[3 * k + d] = topology_.referencePosition[3 * k + d];
@@ -531,8 +536,25 @@ void Simulation::reportMemory(std::ostream& out) {
   out << text;
 }
 
+void Simulation::deformPeriodicBox() {
+  if (boxDeformation_.empty()) return;
+  double F[9];
+  for (int k = 0; k < 9; ++k) {
+    F[k] = boxDeformation_[k].evaluate(&time_);
+    if (!std::isfinite(F[k])) {
+      RunError error(config_.discretization.periodic.deformationPath +
+                     ": the periodic box's deformation gradient at t = " + formatNumber(time_) +
+                     " is not finite");
+      error.markCollective();
+      throw error;
+    }
+  }
+  fields_->setPeriodicDeformation(F);
+}
+
 void Simulation::evaluateForces(long long step) {
   if (contact_ && step == 0) searchContact();
+  deformPeriodicBox();
   evaluator_->setTime(time_);
   evaluator_->evaluate(dt_);
   if (friction_) {

@@ -129,6 +129,9 @@ class Simulation {
   std::string temperatureProblem_;
   // "Time Dependent Short Range Force": the friction coefficient as an expression in t.
   std::unique_ptr<Expression> friction_;
+  // A deformable periodic box: F(t), row-major (empty when the box is rigid).
+  std::vector<Expression> boxDeformation_;
+  void deformPeriodicBox();
   double *u_ = nullptr, *v_ = nullptr, *a_ = nullptr, *y_ = nullptr, *x_ = nullptr, *f_ = nullptr,
          *b_ = nullptr, *volume_ = nullptr, *fc_ = nullptr;
 };

@@ -95,6 +95,27 @@ bool BondFilter::cuts(const double* p, const double* q) const {
   return a >= 0 && a <= bottomLength && b >= 0 && b <= sideLength;
 }
 
+// `Periodic Box Deformation Gradient XX` ... `ZZ`: numbers or expressions in t, the identity
+// where absent; all nine are kept when any is given.
+void readBoxDeformation(ListReader& r, PeriodicBox& box) {
+  const char* axes[3] = {"X", "Y", "Z"};
+  std::vector<std::string> sources(9);
+  bool any = false;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const std::string key = std::string("Periodic Box Deformation Gradient ") + axes[a] + axes[b];
+      if (r.has(key)) {
+        sources[3 * a + b] = r.numberOrExpression(key);
+        Expression check(sources[3 * a + b], {"t"}, r.pathOf(key));
+        if (!any) box.deformationPath = r.pathOf(key);
+        any = true;
+      } else {
+        sources[3 * a + b] = a == b ? "1" : "0";
+      }
+    }
+  if (any) box.deformation = sources;
+}
+
 DiscretizationConfig readDiscretizationConfig(ListReader r) {
   DiscretizationConfig c;
   c.type = r.choice("Type", {"Exodus", "Gmsh", "Text File", "PdQuickGrid"});
@@ -279,7 +300,14 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
       throw InputError(r.pathOf("Periodic X"),
                        "periodic boundaries need a box; the cylinder generator has none");
     }
+    readBoxDeformation(r, c.periodic);
   }
+  for (const char* a : {"X", "Y", "Z"})
+    for (const char* b : {"X", "Y", "Z"})
+      if (!c.periodic.any() && r.has(std::string("Periodic Box Deformation Gradient ") + a + b)) {
+        throw InputError(r.pathOf(std::string("Periodic Box Deformation Gradient ") + a + b),
+                         "a deformable periodic box needs a periodic axis (Periodic X, Y or Z)");
+      }
   r.boolean("Verbose", false);
   r.boolean("Store Exodus Mesh", false);
   if (r.has("Construct Neighborhood Lists") && !r.boolean("Construct Neighborhood Lists", true)) {

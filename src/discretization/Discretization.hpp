@@ -36,6 +36,12 @@ struct PeriodicBox {
   bool periodic[3] = {false, false, false};
   double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
   bool any() const { return periodic[0] || periodic[1] || periodic[2]; }
+  // A deformable box (Peridot extension, `Periodic Box Deformation Gradient XX` ... `ZZ`):
+  // expressions in t of the box's deformation gradient F(t), row-major; empty when the box is
+  // rigid. An image of a point sits at F(t) s from it, s its reference shift (a multiple of the
+  // box lengths), so a homogeneous deformation y = F x is carried across the boundary.
+  std::vector<std::string> deformation;
+  std::string deformationPath;  // deck path of the first key, for messages
 };
 
 // How neighbours are selected. Exodus and text meshes use the sphere |xi| <= delta (inclusive);

@@ -52,6 +52,17 @@ void FieldManager::refreshGhosts(const std::string& name) {
   const int c = f.components;
   const bool position = positionFields_.count(name) > 0;
   const int first = topology_.numOwned + topology_.numGhosts;
+  if (position && deformedBox_ && currentPositionFields_.count(name) > 0) {
+    for (std::size_t m = 0; m < topology_.imageSource.size(); ++m) {
+      const int source = topology_.imageSource[m], image = first + static_cast<int>(m);
+      const double* s = &topology_.imageShift[3 * m];
+      for (int d = 0; d < 3; ++d) {
+        f.data[3 * image + d] = f.data[3 * source + d] + boxF_[3 * d] * s[0] +
+                                boxF_[3 * d + 1] * s[1] + boxF_[3 * d + 2] * s[2];
+      }
+    }
+    return;
+  }
   for (std::size_t m = 0; m < topology_.imageSource.size(); ++m) {
     const int source = topology_.imageSource[m], image = first + static_cast<int>(m);
     for (int d = 0; d < c; ++d) {
@@ -59,6 +70,11 @@ void FieldManager::refreshGhosts(const std::string& name) {
           f.data[c * source + d] + (position ? topology_.imageShift[3 * m + d] : 0.0);
     }
   }
+}
+
+void FieldManager::setPeriodicDeformation(const double F[9]) {
+  deformedBox_ = true;
+  for (int k = 0; k < 9; ++k) boxF_[k] = F[k];
 }
 
 std::vector<double>& FieldManager::bond(const std::string& name, double initial) {

@@ -36,6 +36,10 @@ class FieldManager {
   void refreshGhosts(const std::string& name);
   // A position field's periodic images are shifted by the box, not plain copies.
   void markPosition(const std::string& name) { positionFields_.insert(name); }
+  // A deformable periodic box: images of the positions marked current (markCurrentPosition)
+  // sit at F s from their point (s the reference shift) from the next refresh on. F row-major.
+  void markCurrentPosition(const std::string& name) { currentPositionFields_.insert(name); }
+  void setPeriodicDeformation(const double F[9]);
 
   // One value per one-sided bond entry, allocated on first request with `initial`.
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
@@ -54,7 +58,9 @@ class FieldManager {
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, std::vector<float>> floatBondFields_;
-  std::set<std::string> positionFields_;
+  std::set<std::string> positionFields_, currentPositionFields_;
+  bool deformedBox_ = false;
+  double boxF_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
 }  // namespace peridot
