@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Critical traction of the V4 runs (make_patch.py decks) against resolution, extrapolated to
+dx -> 0, beside LEFM (paper 000 eqs. 23-24) and the paper's 144.4 +- 1.5 Pa.
+
+    /usr/bin/python3 critical.py RATE v4_paper_dx0p04.h ... [--png F] [--csv F]
+                                 [--check LOW HIGH]
+
+The traction is sigma = RATE t. Initiation: the first output (every 5 steps) with a broken
+bond within two horizons of the crack tip (Tip_Damage > 0); a bond broken earlier elsewhere
+(Max_Damage) is reported. Run-away: the first output where a
+point in the band x in [0.45, 0.55] along the crack line has damage > 0.3 (the crack has run
+past mid-width). The linear fit sigma(dx) = sigma_0 + b dx over the initiation values gives the
+extrapolated sigma_0 and its standard error. --check LOW HIGH exits 1 unless every initiation
+traction lies in [LOW, HIGH]. Needs python3-netcdf4/numpy/matplotlib (Debian)."""
+import argparse
+import math
+import re
+import sys
+
+import netCDF4
+import numpy as np
+
+
+def lefm(e_plane_strain, g=1.0, a=0.125, width=1.0):
+    """Eqs. (23)-(24): sigma_F = K_I / sqrt(pi a) / Y(a/L), K_I = sqrt(G E/(1-nu^2))."""
+    r = a / width
+    y = 1.12 - 0.23 * r + 10.6 * r**2 - 21.7 * r**3 + 30.4 * r**4
+    return math.sqrt(g * e_plane_strain) / math.sqrt(math.pi * a) / y
+
+
+def read(path, rate):
+    ds = netCDF4.Dataset(path)
+    t = np.asarray(ds.variables["time_whole"][:])
+    names = ["".join(c.decode() for c in r if c).strip() for r in ds.variables["name_glo_var"][:].data]
+    g = np.asarray(ds.variables["vals_glo_var"][:])
+    dmax, dahead = g[:, names.index("Max_Damage")], g[:, names.index("Ahead_Damage")]
+    m = re.search(r"dx(\d+p?\d*)", path)
+    dx = float(m.group(1).replace("p", "."))
+    dtip = g[:, names.index("Tip_Damage")]
+    init = rate * t[np.argmax(dtip > 0)] if (dtip > 0).any() else float("nan")
+    first = rate * t[np.argmax(dmax > 0)] if (dmax > 0).any() else float("nan")
+    if first < init:
+        print(f"{path}: a bond away from the tip broke first, at {first:.2f} Pa")
+    run = rate * t[np.argmax(dahead > 0.3)] if (dahead > 0.3).any() else float("nan")
+    return dx, init, run
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("rate", type=float)
+    ap.add_argument("files", nargs="+")
+    ap.add_argument("--png")
+    ap.add_argument("--csv")
+    ap.add_argument("--check", nargs=2, type=float)
+    a = ap.parse_args()
+    rows = sorted((read(p, a.rate) + (p,) for p in a.files), reverse=True)
+    paper_const = lefm(1e4 / (1 - (1 / 3) ** 2))  # the paper's E, nu = 1/3: 138.5 Pa
+    sim_paper = lefm(15000.0)  # the material Bulk Modulus 9375 is: nu = 1/4, E/(1-nu^2) = 15000
+    sim_consistent = lefm(1e4 / (1 - 0.25**2))  # Young's Modulus 1e4 in plane strain, nu = 1/4
+    print(f"LEFM, eqs. 23-24: E = 1e4, nu = 1/3 (the paper's values): {paper_const:.1f} Pa; "
+          f"E/(1-nu^2) = 15000 (the paper's constant, nu = 1/4): {sim_paper:.1f} Pa; "
+          f"E = 1e4, nu = 1/4: {sim_consistent:.1f} Pa; paper: 146.9 printed, 144.4 +- 1.5 simulated")
+    print("dx (m), initiation (Pa), run-away (Pa), file")
+    for dx, init, run, p in rows:
+        print(f"{dx:.5f}, {init:.2f}, {run:.2f}, {p}")
+    dxs = np.array([r[0] for r in rows])
+    init = np.array([r[1] for r in rows])
+    run = np.array([r[2] for r in rows])
+    fit = None
+    if len(rows) >= 3:
+        A = np.vstack([np.ones_like(dxs), dxs]).T
+        coef, res, *_ = np.linalg.lstsq(A, init, rcond=None)
+        resid = init - A @ coef
+        s2 = resid @ resid / (len(dxs) - 2)
+        cov = s2 * np.linalg.inv(A.T @ A)
+        fit = (coef[0], math.sqrt(cov[0, 0]), coef[1])
+        print(f"linear fit of the initiation tractions: sigma(dx) = {coef[0]:.2f} (+- {fit[1]:.2f}) "
+              f"+ {coef[1]:.1f} dx")
+    if a.csv:
+        with open(a.csv, "w") as f:
+            f.write("dx,initiation,runaway,file\n")
+            for dx, i, r, p in rows:
+                f.write(f"{dx:.6f},{i:.3f},{r:.3f},{p}\n")
+    if a.png:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(6.5, 4.5))
+        ax.plot(dxs, init, "o", label="initiation (first broken bond)")
+        ax.plot(dxs, run, "s", mfc="none", label="run-away (crack past x = L/2)")
+        if fit:
+            xx = np.linspace(0, dxs.max() * 1.05, 50)
+            ax.plot(xx, fit[0] + fit[2] * xx, "-", c="C0", lw=1,
+                    label=f"linear fit: {fit[0]:.1f} ± {fit[1]:.1f} Pa at dx = 0")
+        ax.axhline(sim_paper, ls="--", c="k", lw=1, label=f"LEFM, model's E' = 15000 Pa: {sim_paper:.1f}")
+        ax.axhline(paper_const, ls=":", c="k", lw=1, label=f"LEFM, E = 1e4, ν = 1/3: {paper_const:.1f}")
+        ax.errorbar([0], [144.4], yerr=[1.5], fmt="D", c="C3", label="paper 000: 144.4 ± 1.5 (extrapolated)")
+        ax.set_xlim(left=-0.002)
+        ax.set_xlabel("lattice spacing dx [m]")
+        ax.set_ylabel("critical traction [Pa]")
+        ax.set_title("V4: plane-strain edge-cracked patch, normalized PMB")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=110)
+        print("wrote", a.png)
+    if a.check:
+        lo, hi = a.check
+        bad = [(dx, i) for dx, i in zip(dxs, init) if not (lo <= i <= hi)]
+        for dx, i in bad:
+            print(f"FAIL: dx = {dx:g}: initiation traction {i:.2f} Pa outside [{lo:g}, {hi:g}]")
+        return 1 if bad else 0
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
