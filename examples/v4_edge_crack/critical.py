@@ -5,13 +5,16 @@ dx -> 0, beside LEFM (paper 000 eqs. 23-24) and the paper's 144.4 +- 1.5 Pa.
     /usr/bin/python3 critical.py RATE v4_paper_dx0p04.h ... [--png F] [--csv F]
                                  [--check LOW HIGH]
 
-The traction is sigma = RATE t. Initiation: the first output (every 5 steps) with a broken
-bond within two horizons of the crack tip (Tip_Damage > 0); a bond broken earlier elsewhere
-(Max_Damage) is reported. Run-away: the first output where a
-point in the band x in [0.45, 0.55] along the crack line has damage > 0.3 (the crack has run
-past mid-width). The linear fit sigma(dx) = sigma_0 + b dx over the initiation values gives the
-extrapolated sigma_0 and its standard error. --check LOW HIGH exits 1 unless every initiation
-traction lies in [LOW, HIGH]. Needs python3-netcdf4/numpy/matplotlib (Debian)."""
+The traction is sigma = RATE t, read at the outputs (every 5 steps).
+Critical traction: the first output at which a point within delta of the crack line with
+a + 0.1 m <= x <= a + 0.15 m has damage > 0.3 (the crack has grown by 0.1 m). Printed beside it:
+the first broken bond within two horizons of the tip (Tip_Damage > 0; on a lattice the bonds cut
+at the tip often fail at a lower load and the crack then arrests) and the run-away (a point with
+damage > 0.3 in x in [0.45, 0.55]: the crack has run past mid-width; later by its travel time).
+A bond broken elsewhere before the tip's is reported. Linear fits sigma(dx) = sigma_0 + b dx of
+each series give sigma_0 and its standard error; the figure shows the fit of the critical
+traction. --check LOW HIGH exits 1 unless every critical traction lies in [LOW, HIGH].
+Needs python3-netcdf4/numpy/matplotlib (Debian)."""
 import argparse
 import math
 import re
@@ -38,11 +41,13 @@ def read(path, rate):
     dx = float(m.group(1).replace("p", "."))
     dtip = g[:, names.index("Tip_Damage")]
     init = rate * t[np.argmax(dtip > 0)] if (dtip > 0).any() else float("nan")
+    dgrown = g[:, names.index("Grown_Damage")]
+    grown = rate * t[np.argmax(dgrown > 0.3)] if (dgrown > 0.3).any() else float("nan")
     first = rate * t[np.argmax(dmax > 0)] if (dmax > 0).any() else float("nan")
     if first < init:
         print(f"{path}: a bond away from the tip broke first, at {first:.2f} Pa")
     run = rate * t[np.argmax(dahead > 0.3)] if (dahead > 0.3).any() else float("nan")
-    return dx, init, run
+    return dx, grown, init, run
 
 
 def main():
@@ -60,27 +65,31 @@ def main():
     print(f"LEFM, eqs. 23-24: E = 1e4, nu = 1/3 (the paper's values): {paper_const:.1f} Pa; "
           f"E/(1-nu^2) = 15000 (the paper's constant, nu = 1/4): {sim_paper:.1f} Pa; "
           f"E = 1e4, nu = 1/4: {sim_consistent:.1f} Pa; paper: 146.9 printed, 144.4 +- 1.5 simulated")
-    print("dx (m), initiation (Pa), run-away (Pa), file")
-    for dx, init, run, p in rows:
-        print(f"{dx:.5f}, {init:.2f}, {run:.2f}, {p}")
+    print("dx (m), growth by 0.1 m (Pa), first broken tip bond (Pa), run-away (Pa), file")
+    for dx, grown, init, run, p in rows:
+        print(f"{dx:.5f}, {grown:.2f}, {init:.2f}, {run:.2f}, {p}")
     dxs = np.array([r[0] for r in rows])
-    init = np.array([r[1] for r in rows])
-    run = np.array([r[2] for r in rows])
+    grown = np.array([r[1] for r in rows])
+    init = np.array([r[2] for r in rows])
+    run = np.array([r[3] for r in rows])
     fit = None
-    if len(rows) >= 3:
+    for label, vals in (("growth by 0.1 m", grown), ("first broken tip bond", init), ("run-away", run)):
+        if len(rows) < 3:
+            break
         A = np.vstack([np.ones_like(dxs), dxs]).T
-        coef, res, *_ = np.linalg.lstsq(A, init, rcond=None)
-        resid = init - A @ coef
+        coef, res, *_ = np.linalg.lstsq(A, vals, rcond=None)
+        resid = vals - A @ coef
         s2 = resid @ resid / (len(dxs) - 2)
         cov = s2 * np.linalg.inv(A.T @ A)
-        fit = (coef[0], math.sqrt(cov[0, 0]), coef[1])
-        print(f"linear fit of the initiation tractions: sigma(dx) = {coef[0]:.2f} (+- {fit[1]:.2f}) "
+        print(f"linear fit, {label}: sigma(dx) = {coef[0]:.2f} (+- {math.sqrt(cov[0, 0]):.2f}) "
               f"+ {coef[1]:.1f} dx")
+        if fit is None:
+            fit = (coef[0], math.sqrt(cov[0, 0]), coef[1])
     if a.csv:
         with open(a.csv, "w") as f:
-            f.write("dx,initiation,runaway,file\n")
-            for dx, i, r, p in rows:
-                f.write(f"{dx:.6f},{i:.3f},{r:.3f},{p}\n")
+            f.write("dx,growth,first_tip_bond,runaway,file\n")
+            for dx, gr, i, r, p in rows:
+                f.write(f"{dx:.6f},{gr:.3f},{i:.3f},{r:.3f},{p}\n")
     if a.png:
         import matplotlib
 
@@ -88,7 +97,8 @@ def main():
         import matplotlib.pyplot as plt
 
         fig, ax = plt.subplots(figsize=(6.5, 4.5))
-        ax.plot(dxs, init, "o", label="initiation (first broken bond)")
+        ax.plot(dxs, grown, "o", label="growth by 0.1 m (critical traction)")
+        ax.plot(dxs, init, "x", c="C2", label="first broken bond at the tip")
         ax.plot(dxs, run, "s", mfc="none", label="run-away (crack past x = L/2)")
         if fit:
             xx = np.linspace(0, dxs.max() * 1.05, 50)
@@ -107,9 +117,9 @@ def main():
         print("wrote", a.png)
     if a.check:
         lo, hi = a.check
-        bad = [(dx, i) for dx, i in zip(dxs, init) if not (lo <= i <= hi)]
+        bad = [(dx, i) for dx, i in zip(dxs, grown) if not (lo <= i <= hi)]
         for dx, i in bad:
-            print(f"FAIL: dx = {dx:g}: initiation traction {i:.2f} Pa outside [{lo:g}, {hi:g}]")
+            print(f"FAIL: dx = {dx:g}: critical traction {i:.2f} Pa outside [{lo:g}, {hi:g}]")
         return 1 if bad else 0
     return 0
 

@@ -18,7 +18,8 @@ density 1 kg/m^3 (the paper gives none: it only sets the time scale).
                       nu = 1/4 and plane-strain modulus E/(1-nu^2) = 15000 Pa.
   --model consistent  `Young's Modulus: 1e4` in plane strain: nu = 1/4, E/(1-nu^2) = 10667 Pa.
 Outputs (globals only, every 5 steps): the largest damage anywhere, within two horizons of the
-crack tip, and in the band x in [0.45, 0.55] along the crack line; critical.py reads them."""
+crack tip, in the band x in [a + 0.1, a + 0.15] along the crack line (the crack has grown by
+0.1 m) and in the band x in [0.45, 0.55] (it has run past mid-width); critical.py reads them."""
 import argparse
 
 ap = argparse.ArgumentParser()
@@ -33,14 +34,14 @@ L, H, A = 1.0, 2.0, 0.125
 nx, ny = round(L / a.dx), round(H / a.dx)
 dx = L / nx
 delta = a.horizon_ratio * dx
-tag = f"dx{a.dx:g}".replace(".", "p")
+tag = f"dx{a.dx:g}".replace(".", "p") + ("" if a.horizon_ratio == 3.015 else f"_m{a.horizon_ratio:g}".replace(".", "p"))
 prefix = f"v4_{tag}_"
 with open(prefix + "points.txt", "w") as f:
     f.write("# x y z block area\n")
     for j in range(ny):
         for i in range(nx):
             f.write(f"{(i + 0.5) * dx:.9f} {(j + 0.5) * dx:.9f} 0 1 {dx * dx:.9e}\n")
-top, bottom, ahead, tip = [], [], [], []
+top, bottom, ahead, tip, grown = [], [], [], [], []
 for j in range(ny):
     y = (j + 0.5) * dx
     for i in range(nx):
@@ -54,7 +55,9 @@ for j in range(ny):
             ahead.append(pid)
         if abs(x - A) < 2 * delta and abs(y - H / 2) < 2 * delta:
             tip.append(pid)
-for name, ids in (("top", top), ("bottom", bottom), ("ahead", ahead), ("tip", tip)):
+        if A + 0.1 <= x <= A + 0.15 and abs(y - H / 2) < delta:
+            grown.append(pid)
+for name, ids in (("top", top), ("bottom", bottom), ("ahead", ahead), ("tip", tip), ("grown", grown)):
     with open(prefix + name + ".txt", "w") as f:
         f.write("\n".join(map(str, ids)) + "\n")
 if a.model == "paper":
@@ -105,6 +108,7 @@ Peridigm:
     Bottom Node Set: {prefix}bottom.txt
     Ahead Node Set: {prefix}ahead.txt
     Tip Node Set: {prefix}tip.txt
+    Grown Node Set: {prefix}grown.txt
     Pull Up:
       Type: Traction
       Node Set: Top Node Set
@@ -136,6 +140,12 @@ Peridigm:
       Node Set: Tip Node Set
       Variable: Damage
       Output Label: Tip_Damage
+    Grown Damage:
+      Compute Class: Node_Set_Data
+      Calculation Type: Maximum
+      Node Set: Grown Node Set
+      Variable: Damage
+      Output Label: Grown_Damage
   Solver:
     Final Time: {a.final:g}
     Verlet:
@@ -148,6 +158,7 @@ Peridigm:
       Max_Damage: true
       Ahead_Damage: true
       Tip_Damage: true
+      Grown_Damage: true
 """
 with open(f"v4_{a.model}_{tag}.yaml", "w") as f:
     f.write(deck)
