@@ -65,26 +65,30 @@ def main():
     print(f"LEFM, eqs. 23-24: E = 1e4, nu = 1/3 (the paper's values): {paper_const:.1f} Pa; "
           f"E/(1-nu^2) = 15000 (the paper's constant, nu = 1/4): {sim_paper:.1f} Pa; "
           f"E = 1e4, nu = 1/4: {sim_consistent:.1f} Pa; paper: 146.9 printed, 144.4 +- 1.5 simulated")
-    print("dx (m), growth by 0.1 m (Pa), first broken tip bond (Pa), run-away (Pa), file")
-    for dx, grown, init, run, p in rows:
-        print(f"{dx:.5f}, {grown:.2f}, {init:.2f}, {run:.2f}, {p}")
+    groups = {}
+    for r in rows:
+        m = re.search(r"_m(\d+p\d+)", r[-1])
+        groups.setdefault(m.group(1).replace("p", ".") if m else "3.015", []).append(r)
+    fits = {}
+    for ratio, grp in groups.items():
+        print(f"horizon = {ratio} dx")
+        print("dx (m), growth by 0.1 m (Pa), first broken tip bond (Pa), run-away (Pa), file")
+        for dx, grown, init, run, p in grp:
+            print(f"{dx:.5f}, {grown:.2f}, {init:.2f}, {run:.2f}, {p}")
+        cols = np.array([r[:4] for r in grp])
+        for k, label in ((1, "growth by 0.1 m"), (2, "first broken tip bond"), (3, "run-away")):
+            if len(grp) < 3:
+                break
+            A = np.vstack([np.ones(len(grp)), cols[:, 0]]).T
+            coef, *_ = np.linalg.lstsq(A, cols[:, k], rcond=None)
+            resid = cols[:, k] - A @ coef
+            cov = resid @ resid / (len(grp) - 2) * np.linalg.inv(A.T @ A)
+            print(f"linear fit, {label}: sigma(dx) = {coef[0]:.2f} (+- {math.sqrt(cov[0, 0]):.2f}) "
+                  f"+ {coef[1]:.1f} dx")
+            if k == 1:
+                fits[ratio] = (coef[0], math.sqrt(cov[0, 0]), coef[1])
     dxs = np.array([r[0] for r in rows])
     grown = np.array([r[1] for r in rows])
-    init = np.array([r[2] for r in rows])
-    run = np.array([r[3] for r in rows])
-    fit = None
-    for label, vals in (("growth by 0.1 m", grown), ("first broken tip bond", init), ("run-away", run)):
-        if len(rows) < 3:
-            break
-        A = np.vstack([np.ones_like(dxs), dxs]).T
-        coef, res, *_ = np.linalg.lstsq(A, vals, rcond=None)
-        resid = vals - A @ coef
-        s2 = resid @ resid / (len(dxs) - 2)
-        cov = s2 * np.linalg.inv(A.T @ A)
-        print(f"linear fit, {label}: sigma(dx) = {coef[0]:.2f} (+- {math.sqrt(cov[0, 0]):.2f}) "
-              f"+ {coef[1]:.1f} dx")
-        if fit is None:
-            fit = (coef[0], math.sqrt(cov[0, 0]), coef[1])
     if a.csv:
         with open(a.csv, "w") as f:
             f.write("dx,growth,first_tip_bond,runaway,file\n")
@@ -96,22 +100,27 @@ def main():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        fig, ax = plt.subplots(figsize=(6.5, 4.5))
-        ax.plot(dxs, grown, "o", label="growth by 0.1 m (critical traction)")
-        ax.plot(dxs, init, "x", c="C2", label="first broken bond at the tip")
-        ax.plot(dxs, run, "s", mfc="none", label="run-away (crack past x = L/2)")
-        if fit:
-            xx = np.linspace(0, dxs.max() * 1.05, 50)
-            ax.plot(xx, fit[0] + fit[2] * xx, "-", c="C0", lw=1,
-                    label=f"linear fit: {fit[0]:.1f} ± {fit[1]:.1f} Pa at dx = 0")
-        ax.axhline(sim_paper, ls="--", c="k", lw=1, label=f"LEFM, model's E' = 15000 Pa: {sim_paper:.1f}")
+        fig, ax = plt.subplots(figsize=(10.5, 4.8))
+        for n, (ratio, grp) in enumerate(groups.items()):
+            cols = np.array([r[:4] for r in grp])
+            col = f"C{n}"
+            ax.plot(cols[:, 0], cols[:, 1], "o", c=col, label=f"δ = {ratio} dx: growth by 0.1 m")
+            ax.plot(cols[:, 0], cols[:, 2], "x", c=col, label=f"δ = {ratio} dx: first broken tip bond")
+            ax.plot(cols[:, 0], cols[:, 3], "s", c=col, mfc="none", ms=4,
+                    label=f"δ = {ratio} dx: run-away (past x = L/2)")
+            if ratio in fits:
+                f0, e0, slope = fits[ratio]
+                xx = np.linspace(0, cols[:, 0].max() * 1.05, 50)
+                ax.plot(xx, f0 + slope * xx, "-", c=col, lw=1,
+                        label=f"δ = {ratio} dx: linear fit, {f0:.1f} ± {e0:.1f} Pa at dx = 0")
+        ax.axhline(sim_paper, ls="--", c="k", lw=1, label=f"LEFM, the model's E' = 15000 Pa: {sim_paper:.1f}")
         ax.axhline(paper_const, ls=":", c="k", lw=1, label=f"LEFM, E = 1e4, ν = 1/3: {paper_const:.1f}")
         ax.errorbar([0], [144.4], yerr=[1.5], fmt="D", c="C3", label="paper 000: 144.4 ± 1.5 (extrapolated)")
         ax.set_xlim(left=-0.002)
         ax.set_xlabel("lattice spacing dx [m]")
-        ax.set_ylabel("critical traction [Pa]")
-        ax.set_title("V4: plane-strain edge-cracked patch, normalized PMB")
-        ax.legend(fontsize=7)
+        ax.set_ylabel("traction [Pa]")
+        ax.set_title("V4: plane-strain edge-cracked patch, normalized PMB, G_I = 1 J/m²")
+        ax.legend(fontsize=7, bbox_to_anchor=(1.02, 1.0), loc="upper left")
         fig.tight_layout()
         fig.savefig(a.png, dpi=110)
         print("wrote", a.png)
