@@ -56,7 +56,6 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
       "Equivalent_Plastic_Strain",
       "Velocity_Gradient",
       "Jacobian_Determinant",
-      "Critical_Stretch",
       "Surface_Correction_Factor",
       "Concentration",
       "Flux_Divergence",
