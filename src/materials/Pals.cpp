@@ -274,6 +274,7 @@ void Pals::precompute(const ModelState& s, const std::vector<int>& points) {
   for (int i : points) {
     const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
     double theta = 0, q = 0, m = 0;  // sum omega zeta e V, sum sigma zeta e V, sum sigma zeta^2 V
+#pragma omp simd reduction(+ : theta, q, m)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = s.y[3 * j] - yi0, Y1 = s.y[3 * j + 1] - yi1, Y2 = s.y[3 * j + 2] - yi2;
@@ -305,6 +306,7 @@ void Pals::computeForce(const ModelState& s, const std::vector<int>& points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     const double pi = p[i], thirdThetaI = theta[i] / 3.0;
+#pragma omp simd reduction(+ : f0, f1, f2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
