@@ -6,6 +6,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "solvers/TangentBlocks.hpp"
 
 namespace peridot {
 
@@ -348,6 +349,100 @@ void Pals::storedEnergyDensity(const ModelState& s, const std::vector<int>& poin
     }
     // The deviatoric term has no 1/2: sigma is normalized so that it gives G E:E (Peridigm).
     energyDensity[i] = 0.5 * K * dilatation_[i] * dilatation_[i] + G * deviatoric;
+  }
+}
+
+// Tangent, family by family (as Elastic::addStiffness). Family i exerts p_b = t_b V_b n_b on i
+// and -(V_i / V_b) p_b on j(b). With a_c = (1-d) omega zeta V (d theta / d e_c),
+// s_c = (1-d) sigma zeta V (d q / d e_c), m = sum (1-d) sigma zeta^2 V:
+//   d p / d e_c = pi_c = (K + 2 G m / 9) a_c - (2 G / 3) s_c,
+//   d t_b / d e_c = delta_bc alpha_b + u_b pi_c - w_b a_c,
+// alpha_b = (1-d) 2 G sigma, u_b = (1-d) omega zeta, w_b = (1-d) (2G/3) sigma zeta, so
+//   d p_b / d y_j(c) = delta_bc D_b + V_b (u_b pi_c - w_b a_c) n_b n_c^T,
+//   D_b = V_b [alpha_b n_b n_b^T + t_b (I - n_b n_b^T) / |Y_b|],
+// and d / d y_i is minus the sum over c. Stiffness K = -V_row d f / d y.
+void Pals::addStiffness(const ModelState& s, const std::vector<int>& points,
+                        TangentBlocks& K) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double Kb = constants_.bulkModulus, G = constants_.shearModulus;
+  std::vector<double> n, D, a, piC, u, w;  // per bond of the family, reused
+  for (int i : points) {
+    const std::int64_t first = offsets[i], count = offsets[i + 1] - first;
+    if (count == 0) continue;
+    n.assign(3 * count, 0.0);
+    D.assign(9 * count, 0.0);
+    a.assign(count, 0.0);
+    piC.assign(count, 0.0);
+    u.assign(count, 0.0);
+    w.assign(count, 0.0);
+    const double vi = s.volume[i];
+    double m = 0;
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::int64_t b = first + k;
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double zeta = s.bondLength[b], vj = s.volume[neighbors[b]];
+      m += intact * sigmaOwn_[b] * zeta * zeta * vj;
+    }
+    double S1[3] = {0, 0, 0}, S2[3] = {0, 0, 0}, G1[3] = {0, 0, 0}, G2[3] = {0, 0, 0};
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::int64_t b = first + k;
+      const int j = neighbors[b];
+      double Y[3];
+      for (int d = 0; d < 3; ++d) Y[d] = s.y[3 * j + d] - s.y[3 * i + d];
+      const double length = std::sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+      if (!(length > 0)) continue;  // no direction: no force, no stiffness (as the force loop)
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double zeta = s.bondLength[b], vj = s.volume[j];
+      const double omega = omegaOwn_[b], sigma = sigmaOwn_[b];
+      const double e = length - zeta;
+      const double t = intact * (pressure_[i] * omega * zeta +
+                                 2.0 * G * sigma * (e - dilatation_[i] * zeta / 3.0));
+      const double alpha = intact * 2.0 * G * sigma;
+      a[k] = intact * omega * zeta * vj;
+      const double sk = intact * sigma * zeta * vj;
+      piC[k] = (Kb + 2.0 * G * m / 9.0) * a[k] - 2.0 * G / 3.0 * sk;
+      u[k] = intact * omega * zeta;
+      w[k] = intact * 2.0 * G / 3.0 * sigma * zeta;
+      for (int d = 0; d < 3; ++d) n[3 * k + d] = Y[d] / length;
+      const double* nb = &n[3 * k];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          D[9 * k + 3 * r + c] =
+              vj * (alpha * nb[r] * nb[c] + t * ((r == c ? 1.0 : 0.0) - nb[r] * nb[c]) / length);
+      for (int d = 0; d < 3; ++d) {
+        S1[d] += vj * u[k] * nb[d];
+        S2[d] += vj * w[k] * nb[d];
+        G1[d] += piC[k] * nb[d];
+        G2[d] += a[k] * nb[d];
+      }
+    }
+    // Row i.
+    double Dsum[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (std::int64_t k = 0; k < count; ++k) {
+      const int j = neighbors[first + k];
+      K.add(i, j, -vi, &D[9 * k]);
+      K.addOuter(i, j, -vi * piC[k], S1, &n[3 * k]);
+      K.addOuter(i, j, vi * a[k], S2, &n[3 * k]);
+      for (int r = 0; r < 9; ++r) Dsum[r] += D[9 * k + r];
+    }
+    K.add(i, i, vi, Dsum);
+    K.addOuter(i, i, vi, S1, G1);
+    K.addOuter(i, i, -vi, S2, G2);
+    // Rows j(b): K_j,j(c) = V_i [delta_bc D_b + V_b (u_b pi_c - w_b a_c) n_b n_c^T], and column
+    // i minus their sum.
+    for (std::int64_t k = 0; k < count; ++k) {
+      const int j = neighbors[first + k];
+      const double vj = s.volume[j];
+      K.add(j, j, vi, &D[9 * k]);
+      K.add(j, i, -vi, &D[9 * k]);
+      for (std::int64_t l = 0; l < count; ++l) {
+        const double c = vi * vj * (u[k] * piC[l] - w[k] * a[l]);
+        if (c != 0.0) K.addOuter(j, neighbors[first + l], c, &n[3 * k], &n[3 * l]);
+      }
+      K.addOuter(j, i, -vi * vj * u[k], &n[3 * k], G1);
+      K.addOuter(j, i, vi * vj * w[k], &n[3 * k], G2);
+    }
   }
 }
 

@@ -35,6 +35,9 @@ class Pals : public MaterialModel {
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
+  TangentReach tangentReach() const override { return TangentReach::Family; }
+  void addStiffness(const ModelState& state, const std::vector<int>& points,
+                    TangentBlocks& K) const override;
   std::vector<std::string> outputFields() const override;
   std::string family() const override { return "PALS"; }
 
