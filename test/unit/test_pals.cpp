@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
+#include "damage/DamageModel.hpp"
 #include "materials/Pals.hpp"
 
 namespace peridot {
@@ -179,44 +181,65 @@ TEST(Pals, RotatedShearIsNotAMatchingMode) {
   EXPECT_GT(e.energy, 1e-3);
 }
 
-// Force = -grad(sum_i V_i W_i) by central differences, on a block displaced at random.
+std::shared_ptr<DamageModel> interfaceAware(double sc) {
+  Teuchos::ParameterList p;
+  p.set("Damage Model", "Interface Aware");
+  p.set("Critical Stretch", sc);
+  ListReader r(p, "Damage Models -> D");
+  return createDamageModel(r);
+}
+
+// Force = -grad(sum_i V_i W_i) by central differences, on a block displaced at random, without
+// and with broken bonds (broken by Interface Aware damage first, then held).
 TEST(Pals, ForceIsMinusTheGradientOfTheEnergy) {
-  const auto pts = block(5, 4, 4);
-  Problem pr(pts, 2.015, material("Pals", "Gaussian", "One"), nullptr, PeriodicBox(), 1.0);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-0.02, 0.02);
-  double* y = pr.fields->node("Coordinates", 3);
-  for (int p = 0; p < pr.topology.numOwned; ++p)
-    for (int a = 0; a < 3; ++a) y[3 * p + a] += u(rng);
-  const int n = pr.topology.numOwned;
-  auto energy = [&]() {
-    pr.evaluator->evaluate(0.0);
-    std::vector<double> w(pr.topology.numOverlap);
-    pr.evaluator->storedEnergyDensity(w.data());
-    double E = 0;
-    for (int i = 0; i < n; ++i) E += w[i];  // unit volumes
-    return E;
-  };
-  energy();
-  const std::vector<double> f(pr.fields->node("Force_Density", 3),
-                              pr.fields->node("Force_Density", 3) + 3 * n);
-  double worst = 0, scale = 0;
-  const double h = 1e-6;
-  for (int p : {0, 7, 21, 40, 79}) {
-    for (int a = 0; a < 3; ++a) {
-      y[3 * p + a] += h;
-      const double plus = energy();
-      y[3 * p + a] -= 2 * h;
-      const double minus = energy();
-      y[3 * p + a] += h;
-      const double grad = (plus - minus) / (2 * h);
-      worst = std::max(worst, std::abs(f[3 * p + a] + grad));
-      scale = std::max(scale, std::abs(f[3 * p + a]));
+  for (bool damaged : {false, true}) {
+    const auto pts = block(5, 4, 4);
+    Problem pr(pts, 2.015, material("Pals", "Gaussian", "One"),
+               damaged ? interfaceAware(0.015) : nullptr, PeriodicBox(), 1.0);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-0.02, 0.02);
+    double* y = pr.fields->node("Coordinates", 3);
+    for (int p = 0; p < pr.topology.numOwned; ++p)
+      for (int a = 0; a < 3; ++a) y[3 * p + a] += u(rng);
+    const int n = pr.topology.numOwned;
+    if (damaged) {
+      pr.evaluator->evaluate(0.0);  // breaks the bonds stretched past 0.015, for good
+      const auto& d = pr.fields->bondFloat("Bond_Damage");
+      const double broken = std::count(d.begin(), d.end(), 1.0f);
+      std::printf("  %.0f of %zu bond entries broken\n", broken, d.size());
+      EXPECT_GT(broken, 0.05 * d.size());
+      EXPECT_LT(broken, 0.9 * d.size());
     }
+    auto energy = [&]() {
+      pr.evaluator->evaluate(0.0, false);
+      std::vector<double> w(pr.topology.numOverlap);
+      pr.evaluator->storedEnergyDensity(w.data());
+      double E = 0;
+      for (int i = 0; i < n; ++i) E += w[i];  // unit volumes
+      return E;
+    };
+    energy();
+    const std::vector<double> f(pr.fields->node("Force_Density", 3),
+                                pr.fields->node("Force_Density", 3) + 3 * n);
+    double worst = 0, scale = 0;
+    const double h = 1e-6;
+    for (int p : {0, 7, 21, 40, 79}) {
+      for (int a = 0; a < 3; ++a) {
+        y[3 * p + a] += h;
+        const double plus = energy();
+        y[3 * p + a] -= 2 * h;
+        const double minus = energy();
+        y[3 * p + a] += h;
+        const double grad = (plus - minus) / (2 * h);
+        worst = std::max(worst, std::abs(f[3 * p + a] + grad));
+        scale = std::max(scale, std::abs(f[3 * p + a]));
+      }
+    }
+    std::printf("  force vs -dE/dy: worst difference %.2e of the largest force %.2e\n", worst,
+                scale);
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_LT(worst, 1e-6 * scale);
   }
-  std::printf("  force vs -dE/dy: worst difference %.2e of the largest force %.2e\n", worst, scale);
-  EXPECT_GT(scale, 1e-3);
-  EXPECT_LT(worst, 1e-6 * scale);
 }
 
 // One layer of points (all bonds in z = 0): the out-of-plane multipliers are dropped, as in
