@@ -44,6 +44,7 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
+      "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
       "Cauchy_Stress",
       "Unrotated_Cauchy_Stress",
       "Deformation_Gradient",
