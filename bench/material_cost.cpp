@@ -97,6 +97,7 @@ BENCHMARK_CAPTURE(Evaluate, ElasticPlasticHardening, std::string("Elastic Plasti
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Evaluate, Viscoelastic, std::string("Viscoelastic"))
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, Pals, std::string("Pals"))->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);

@@ -92,16 +92,23 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     s_.evaluator->nodeDamage(out.data());
   } else if (name == "Dilatation" || name == "Weighted_Volume" || name == "Lambda") {
     copy(s_.fields->node(name, 1));
+  } else if (name == "Pals_Pressure" || name == "Critical_Stretch" ||
+             name.rfind("Lagrange_Multiplier_", 0) == 0 ||
+             name.find("_Normalization") != std::string::npos) {
+    // Fields of a material or damage model (Pals, Interface Aware): 0 at points without one.
+    if (s_.fields->hasNode(name)) copy(s_.fields->node(name, 1));
   } else if (name == "Kinetic_Energy") {
     for (int i = 0; i < n; ++i) {
       const double v2 =
           v_[3 * i] * v_[3 * i] + v_[3 * i + 1] * v_[3 * i + 1] + v_[3 * i + 2] * v_[3 * i + 2];
       out[i] = 0.5 * (*s_.density)[i] * volume_[i] * v2;
     }
-  } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density") {
+  } else if (name == "Stored_Elastic_Energy" || name == "Stored_Elastic_Energy_Density" ||
+             name == "Strain_Energy" || name == "Strain_Energy_Density") {
     std::vector<double> w(s_.topology->numOverlap, 0.0);
     s_.evaluator->storedEnergyDensity(w.data());
-    const bool perVolume = name == "Stored_Elastic_Energy_Density";
+    const bool perVolume =
+        name == "Stored_Elastic_Energy_Density" || name == "Strain_Energy_Density";
     for (int i = 0; i < n; ++i) out[i] = perVolume ? w[i] : w[i] * volume_[i];
   } else {
     throw std::logic_error("no node variable " + name);
@@ -170,7 +177,7 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
     values.push_back(reduce(nullptr, "Kinetic_Energy", 0, "Sum"));
     return;
   }
-  if (name == "Global_Stored_Elastic_Energy") {
+  if (name == "Global_Stored_Elastic_Energy" || name == "Global_Strain_Energy") {
     values.push_back(reduce(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
     return;
   }

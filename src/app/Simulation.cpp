@@ -480,6 +480,11 @@ void Simulation::checkVariables() {
     if ((v == "Dilatation" || v == "Weighted_Volume") && !lps && !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a state-based material (e.g. \"Elastic\")");
     }
+    const bool palsField = v == "Pals_Pressure" || v.rfind("Lagrange_Multiplier_", 0) == 0 ||
+                           v.find("_Normalization") != std::string::npos;
+    if (palsField && !modelFields.count(v)) {
+      throw InputError(path, "\"" + v + "\" needs a \"Pals\" material");
+    }
     if (v == "Lambda" && !modelFields.count(v)) {
       throw InputError(path,
                        "\"Lambda\" needs an elastic-plastic material (e.g. \"Elastic "

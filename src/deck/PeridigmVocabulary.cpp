@@ -44,6 +44,7 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
+      "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
       "Cauchy_Stress",
       "Unrotated_Cauchy_Stress",
       "Deformation_Gradient",
@@ -56,7 +57,6 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
       "Equivalent_Plastic_Strain",
       "Velocity_Gradient",
       "Jacobian_Determinant",
-      "Critical_Stretch",
       "Surface_Correction_Factor",
       "Concentration",
       "Flux_Divergence",

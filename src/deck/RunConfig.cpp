@@ -245,6 +245,29 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "temperature change Delta T = f(t) - f(0) of Prescribed Temperature (thermal strains)"},
       {"Global_Kinetic_Energy", 0, "sum of Kinetic_Energy (global variable)"},
       {"Global_Stored_Elastic_Energy", 0, "sum of Stored_Elastic_Energy (global variable)"},
+      // Older Peridigm names of the stored energy (compute classes not registered in 1.5).
+      {"Strain_Energy", 1, "stored elastic energy of the point (= Stored_Elastic_Energy)"},
+      {"Strain_Energy_Density", 1,
+       "stored elastic energy density (= Stored_Elastic_Energy_Density)"},
+      {"Global_Strain_Energy", 0, "sum of Strain_Energy (global variable)"},
+      // Fields of the Pals material and of Interface Aware damage.
+      {"Pals_Pressure", 1, "Pals: the pressure-like scalar p of the force state"},
+      {"Dilatation_Normalization", 1, "Pals: normalization of omega (1, as Peridigm)"},
+      {"Deviatoric_Normalization", 1, "Pals: normalization of sigma (1, as Peridigm)"},
+      {"Lagrange_Multiplier_Dilatation_1", 1, "Pals: dilatation multiplier (xx)"},
+      {"Lagrange_Multiplier_Dilatation_2", 1, "Pals: dilatation multiplier (yy)"},
+      {"Lagrange_Multiplier_Dilatation_3", 1, "Pals: dilatation multiplier (zz)"},
+      {"Lagrange_Multiplier_Dilatation_4", 1, "Pals: dilatation multiplier (xy)"},
+      {"Lagrange_Multiplier_Dilatation_5", 1, "Pals: dilatation multiplier (xz)"},
+      {"Lagrange_Multiplier_Dilatation_6", 1, "Pals: dilatation multiplier (yz)"},
+      {"Lagrange_Multiplier_Deviatoric_1", 1, "Pals: deviatoric multiplier (xx)"},
+      {"Lagrange_Multiplier_Deviatoric_2", 1, "Pals: deviatoric multiplier (yy)"},
+      {"Lagrange_Multiplier_Deviatoric_3", 1, "Pals: deviatoric multiplier (zz)"},
+      {"Lagrange_Multiplier_Deviatoric_4", 1, "Pals: deviatoric multiplier (xy)"},
+      {"Lagrange_Multiplier_Deviatoric_5", 1, "Pals: deviatoric multiplier (xz)"},
+      {"Lagrange_Multiplier_Deviatoric_6", 1, "Pals: deviatoric multiplier (yz)"},
+      {"Critical_Stretch", 1,
+       "Interface Aware damage: critical stretch of the point (0 elsewhere)"},
   };
   return vars;
 }

@@ -38,7 +38,7 @@ std::string tangentDeck(const std::string& material, const std::string& plane, b
   }
   d << "  Materials:\n    M:\n      Material Model: \"" << material
     << "\"\n      Density: 2.0\n      Bulk Modulus: 5.0\n";
-  if (material == "Elastic") d << "      Shear Modulus: 3.0\n";
+  if (material == "Elastic" || material == "Pals") d << "      Shear Modulus: 3.0\n";
   if (!plane.empty()) d << "      " << plane << ": true\n";
   d << "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.01\n"
        "  Boundary Conditions:\n    All Node Set: \""
@@ -116,6 +116,7 @@ TEST(QuasiStaticTangent, MatchesFiniteDifferences) {
   const Case cases[] = {{"Elastic Bond Based", "", false},
                         {"Normalized PMB", "", false},
                         {"Elastic", "", false},
+                        {"Pals", "", false},
                         {"Elastic Bond Based", "Plane Stress", true},
                         {"Elastic", "Plane Strain", true},
                         {"Elastic", "Plane Stress", true}};

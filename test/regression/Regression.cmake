@@ -76,6 +76,12 @@ peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
 peridot_identical(ThermalCrack ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ThermalCrack
                   ThermalCrack.yaml ThermalCrack.e exact_thermal.comp 0)
 
+# Pals (position-aware linear solid) with Interface Aware damage under simple shear: bitwise
+# equal at 1-4 ranks; the energy at every point is checked against the continuum in
+# test/mpi/test_pals_deck.cpp.
+peridot_identical(PalsSimpleShear ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PalsSimpleShear
+                  PalsSimpleShear.yaml PalsSimpleShear.e exact.comp 343)
+
 # QuasiStatic (Peridigm's XML deck form): the same nodal results at 1, 2 and 3 ranks within the
 # solver tolerances of quasistatic.comp (not bitwise: see there).
 add_test(NAME ranks_QuasiStaticBar

@@ -38,3 +38,6 @@ peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
 # Elastic-plastic history (bond fields and the node field Lambda) across a restart.
 peridot_restart_test(split_plastic split Plastic.yaml.in 16.0 8.0 10 "Lambda")
 peridot_restart_test(split_visco split Visco.yaml.in 16.0 8.0 10 "Dilatation")
+# Pals (multipliers recomputed at start-up, per-bond influence tabulated again) with Interface
+# Aware damage breaking bonds on both sides of the checkpoint.
+peridot_restart_test(split_pals split Pals.yaml.in 16.0 8.0 10 "Damage")
