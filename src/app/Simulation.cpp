@@ -475,6 +475,14 @@ void Simulation::checkVariables() {
     if ((v == "Dilatation" || v == "Weighted_Volume") && !lps && !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a state-based material (e.g. \"Elastic\")");
     }
+    if ((v == "Shape_Tensor_Inverse" || v == "Cauchy_Stress" || v == "Unrotated_Cauchy_Stress" ||
+         v == "Von_Mises_Stress" || v == "Hourglass_Force_Density" ||
+         v == "Equivalent_Plastic_Strain") &&
+        !modelFields.count(v)) {
+      throw InputError(path, "\"" + v + "\" needs a correspondence material (e.g. \"Elastic " +
+                                 "Correspondence\"" +
+                                 (v == "Equivalent_Plastic_Strain" ? ", a plastic one)" : ")"));
+    }
     if (v == "Lambda" && !modelFields.count(v)) {
       throw InputError(path,
                        "\"Lambda\" needs an elastic-plastic material (e.g. \"Elastic "

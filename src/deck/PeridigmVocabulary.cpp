@@ -44,16 +44,9 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
-      "Cauchy_Stress",
-      "Unrotated_Cauchy_Stress",
-      "Deformation_Gradient",
-      "Shape_Tensor_Inverse",
-      "Hourglass_Force_Density",
       "Left_Stretch_Tensor",
       "Rotation_Tensor",
       "Unrotated_Rate_Of_Deformation",
-      "Von_Mises_Stress",
-      "Equivalent_Plastic_Strain",
       "Velocity_Gradient",
       "Jacobian_Determinant",
       "Critical_Stretch",

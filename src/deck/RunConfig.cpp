@@ -237,6 +237,18 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Dilatation", 1, "LPS dilatation"},
       {"Weighted_Volume", 1, "LPS weighted volume"},
       {"Lambda", 1, "plastic multiplier of the elastic-plastic models"},
+      // Correspondence models (materials/Correspondence.hpp); full tensors are written as 9
+      // element variables <name>XX, XY, XZ, YX, ..., ZZ, as Peridigm does.
+      {"Deformation_Gradient", 9,
+       "deformation gradient F (correspondence models; for other models F = N K^-1 from the "
+       "current positions, without bond damage, as Peridigm's compute)"},
+      {"Shape_Tensor_Inverse", 9, "inverse of the shape tensor K (correspondence models)"},
+      {"Cauchy_Stress", 9, "Cauchy stress (correspondence models)"},
+      {"Unrotated_Cauchy_Stress", 9,
+       "Cauchy stress in the frame of F's polar rotation, R^T sigma R"},
+      {"Von_Mises_Stress", 1, "von Mises stress of the Cauchy stress (correspondence models)"},
+      {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
+      {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},
