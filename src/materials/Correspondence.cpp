@@ -151,7 +151,10 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
   unrotated_ = fields.node(kUnrotatedCauchyStress, 9);
   vonMises_ = fields.node(kVonMisesStress, 1);
   hourglass_ = fields.node(kHourglassForceDensity, 3);
-  forceTensor_ = fields.node(kForceTensor, 9);
+  for (int r = 0; r < 3; ++r) {
+    fRow_[r] = fields.node(kDeformationGradientRows[r], 3);
+    aRow_[r] = fields.node(kForceTensorRows[r], 3);
+  }
 }
 
 std::vector<std::string> CorrespondenceMaterial::outputFields() const {
@@ -174,7 +177,9 @@ void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<i
     }
     for (int k = 0; k < 9; ++k) {
       deformationGradient_[9 * i + k] = (k % 4 == 0) ? 1.0 : 0.0;
-      cauchy_[9 * i + k] = unrotated_[9 * i + k] = forceTensor_[9 * i + k] = 0.0;
+      cauchy_[9 * i + k] = unrotated_[9 * i + k] = 0.0;
+      fRow_[k / 3][3 * i + k % 3] = deformationGradient_[9 * i + k];
+      aRow_[k / 3][3 * i + k % 3] = 0.0;
     }
     vonMises_[i] = 0.0;
     for (int d = 0; d < 3; ++d) hourglass_[3 * i + d] = 0.0;
@@ -211,7 +216,7 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
                   " (fewer than three non-coplanar intact bonds); Peridigm stops here too "
                   "(\"failed to compute shape tensor\")";
       }
-      std::fill(forceTensor_ + 9 * i, forceTensor_ + 9 * i + 9, 0.0);
+      for (int k = 0; k < 9; ++k) fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;
       continue;
     }
     double E[9], S[9], P[9];
@@ -222,8 +227,13 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
         E[3 * r + c] = 0.5 * (ftf - (r == c ? 1.0 : 0.0));
       }
     secondPiolaKirchhoff(i, E, S);
-    multiply(F, S, P);                        // first Piola-Kirchhoff P = F S
-    multiply(P, Kinv, forceTensor_ + 9 * i);  // A = P K^-1
+    multiply(F, S, P);  // first Piola-Kirchhoff P = F S
+    double A[9];
+    multiply(P, Kinv, A);  // A = P K^-1
+    for (int k = 0; k < 9; ++k) {
+      fRow_[k / 3][3 * i + k % 3] = F[k];
+      aRow_[k / 3][3 * i + k % 3] = A[k];
+    }
     // Cauchy sigma = P F^T / J; unrotated R^T sigma R = U S U / J (F = R U).
     const double J = determinant(F);
     double* sigma = cauchy_ + 9 * i;
@@ -257,22 +267,28 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
 void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  const double* A = forceTensor_;
-  const double* Fg = deformationGradient_;
+  const double *A0 = aRow_[0], *A1 = aRow_[1], *A2 = aRow_[2];
+  const double *F0 = fRow_[0], *F1 = fRow_[1], *F2 = fRow_[2];
   const double hourglassScale =
       18.0 * hourglassCoefficient_ * constants_.bulkModulus / kPi;  // / delta^4 per end
   for (int i : points) {
     const double* xi0 = s.x + 3 * i;
     const double* yi0 = s.y + 3 * i;
-    const double* Ai = A + 9 * i;
-    const double* Fi = Fg + 9 * i;
+    const double Ai[9] = {A0[3 * i],     A0[3 * i + 1], A0[3 * i + 2], A1[3 * i],    A1[3 * i + 1],
+                          A1[3 * i + 2], A2[3 * i],     A2[3 * i + 1], A2[3 * i + 2]};
+    const double Fi[9] = {F0[3 * i],     F0[3 * i + 1], F0[3 * i + 2], F1[3 * i],    F1[3 * i + 1],
+                          F1[3 * i + 2], F2[3 * i],     F2[3 * i + 1], F2[3 * i + 2]};
     const double di = s.horizon[i];
     const double Ci = hourglassScale / (di * di * di * di);
     double f0 = 0, f1 = 0, f2 = 0, h0 = 0, h1 = 0, h2 = 0;
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
-      const double* Aj = A + 9 * j;
-      const double* Fj = Fg + 9 * j;
+      const double Aj[9] = {A0[3 * j], A0[3 * j + 1], A0[3 * j + 2],
+                            A1[3 * j], A1[3 * j + 1], A1[3 * j + 2],
+                            A2[3 * j], A2[3 * j + 1], A2[3 * j + 2]};
+      const double Fj[9] = {F0[3 * j], F0[3 * j + 1], F0[3 * j + 2],
+                            F1[3 * j], F1[3 * j + 1], F1[3 * j + 2],
+                            F2[3 * j], F2[3 * j + 1], F2[3 * j + 2]};
       const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double ownI = s.bondSides ? (s.bondSides[b] & 1) : 1.0;

@@ -68,7 +68,8 @@ class CorrespondenceMaterial : public MaterialModel {
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterPrecompute() const override {
-    return {kDeformationGradient, kForceTensor};
+    return {kDeformationGradientRows[0], kDeformationGradientRows[1], kDeformationGradientRows[2],
+            kForceTensorRows[0],         kForceTensorRows[1],         kForceTensorRows[2]};
   }
   // Shape tensor, F, the stress of the model (trial history only), P K^-1 and the outputs.
   void precompute(const ModelState& state, const std::vector<int>& points) override;
@@ -87,8 +88,12 @@ class CorrespondenceMaterial : public MaterialModel {
   static constexpr const char* kUnrotatedCauchyStress = "Unrotated_Cauchy_Stress";
   static constexpr const char* kVonMisesStress = "Von_Mises_Stress";
   static constexpr const char* kHourglassForceDensity = "Hourglass_Force_Density";
-  // Per point, ghosted: A = P K^-1, the tensor that maps a bond xi to the force state.
-  static constexpr const char* kForceTensor = "Correspondence_Force_Tensor";
+  // Per point, ghosted, by rows (ghost refreshes move 1- or 3-component fields): F, and
+  // A = P K^-1, the tensor that maps a bond xi to the force state.
+  static constexpr const char* kDeformationGradientRows[3] = {
+      "Correspondence_F_Row_X", "Correspondence_F_Row_Y", "Correspondence_F_Row_Z"};
+  static constexpr const char* kForceTensorRows[3] = {
+      "Correspondence_A_Row_X", "Correspondence_A_Row_Y", "Correspondence_A_Row_Z"};
 
  protected:
   CorrespondenceMaterial(ListReader& params, const std::string& name);
@@ -115,7 +120,8 @@ class CorrespondenceMaterial : public MaterialModel {
   double* unrotated_ = nullptr;
   double* vonMises_ = nullptr;
   double* hourglass_ = nullptr;
-  double* forceTensor_ = nullptr;
+  double* fRow_[3] = {nullptr, nullptr, nullptr};
+  double* aRow_[3] = {nullptr, nullptr, nullptr};
 };
 
 }  // namespace peridot

@@ -309,9 +309,13 @@ TEST(ElasticCorrespondence, ShapeTensorSingularAfterBondBreakageStopsTheRun) {
     EXPECT_NE(what.find("point 63 at (2, 2, 2) has 2 intact bonds of"), std::string::npos) << what;
     EXPECT_NE(what.find("became singular"), std::string::npos) << what;
   }
-  for (const char* name : {"Deformation_Gradient", "Correspondence_Force_Tensor", "Cauchy_Stress"})
+  for (const char* name : {"Deformation_Gradient", "Cauchy_Stress", "Shape_Tensor_Inverse"})
     for (int k = 0; k < 9 * pr.topology.numOwned; ++k)
       ASSERT_TRUE(std::isfinite(pr.fields->node(name, 9)[k])) << name;
+  for (const char* name :
+       {"Correspondence_A_Row_X", "Correspondence_A_Row_Y", "Correspondence_A_Row_Z"})
+    for (int k = 0; k < 3 * pr.topology.numOwned; ++k)
+      ASSERT_TRUE(std::isfinite(pr.fields->node(name, 3)[k])) << name;
 }
 
 // Uniaxial strain E_xx = g(t) loaded past yield, unloaded and reloaded in compression. With
