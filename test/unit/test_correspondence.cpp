@@ -9,6 +9,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -65,10 +66,15 @@ const double* nodeTensor(Problem& pr, const char* name, int components, long lon
   return pr.fields->node(name, components) + components * pr.local(g);
 }
 
+// Also prints the largest difference relative to `scale` (tabulated in doc/verification.md).
 void expectTensorNear(const double* actual, const double* expected, double tolerance,
-                      const std::string& what) {
-  for (int k = 0; k < 9; ++k)
+                      const std::string& what, double scale = 0.0) {
+  double worst = 0;
+  for (int k = 0; k < 9; ++k) {
     EXPECT_NEAR(actual[k], expected[k], tolerance) << what << " component " << k;
+    worst = std::max(worst, std::abs(actual[k] - expected[k]));
+  }
+  if (scale > 0) std::printf("  %s: max |error| / scale = %.2e\n", what.c_str(), worst / scale);
 }
 
 // Rotation by angle about the unit axis n (Rodrigues).
@@ -116,10 +122,11 @@ TEST_F(ElasticCorrespondenceLattice, UniaxialStrainMatchesClosedForm) {
                              0,
                              kLambda * g / (1 + e)};
     const double scale = (kLambda + 2 * kG) * e;
-    expectTensorNear(nodeTensor(pr, "Deformation_Gradient", 9, kCentre), F, 1e-12, "F");
+    expectTensorNear(nodeTensor(pr, "Deformation_Gradient", 9, kCentre), F, 1e-12, "uniaxial F",
+                     1.0);
     // F's lattice sums round at ~1e-15, so the stress carries ~1e-15 K besides its relative error.
     expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, 1e-10 * scale + 1e-13 * kK,
-                     "sigma");
+                     "uniaxial strain e = " + std::to_string(e) + " sigma", scale);
     if (e < 1e-5) {  // the linear-elastic limit: sigma_xx = (lambda + 2 mu) e, sigma_yy = lambda e
       const double* s = nodeTensor(pr, "Cauchy_Stress", 9, kCentre);
       EXPECT_NEAR(s[0] / ((kLambda + 2 * kG) * e), 1.0, 1e-5);
@@ -142,7 +149,8 @@ TEST_F(ElasticCorrespondenceLattice, DilatationMatchesClosedForm) {
   deform(pr, F);
   const double p = 3 * kK * g / (1 + e);
   const double sigma[9] = {p, 0, 0, 0, p, 0, 0, 0, p};
-  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, 1e-10 * p, "sigma");
+  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, 1e-10 * p,
+                   "dilatation sigma", p);
   EXPECT_NEAR(*nodeTensor(pr, "Von_Mises_Stress", 1, kCentre), 0.0, 1e-10 * p);
 }
 
@@ -158,7 +166,8 @@ TEST_F(ElasticCorrespondenceLattice, SimpleShearMatchesClosedForm) {
   // F S: row x = S_x + c S_y, row y = S_y; sigma = (F S) F^T: column x gains c times column y.
   const double FSxx = Sxx + c * Sxy, FSxy = Sxy + c * Syy;
   const double sigma[9] = {FSxx + c * FSxy, FSxy, 0, Sxy + c * Syy, Syy, 0, 0, 0, Szz};
-  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, 1e-10 * mu * c, "sigma");
+  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, 1e-10 * mu * c,
+                   "simple shear sigma", mu * c);
   // Linear limit: sigma_xy = mu gamma to O(gamma^2).
   EXPECT_NEAR(nodeTensor(pr, "Cauchy_Stress", 9, kCentre)[1] / (mu * c), 1.0, 2 * c * c);
 }
@@ -172,8 +181,8 @@ TEST_F(ElasticCorrespondenceLattice, RotationIsStressFreeAndUnrotatedStressIsFra
   rotation(n, 0.5, R);
   deform(pr, R);
   const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-  expectTensorNear(nodeTensor(pr, "Deformation_Gradient", 9, kCentre), R, 1e-12, "F");
-  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), zero, 1e-12, "sigma");
+  expectTensorNear(nodeTensor(pr, "Deformation_Gradient", 9, kCentre), R, 1e-12, "rotation F", 1.0);
+  expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), zero, 1e-12, "rotation sigma", kG);
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(pr.force(kCentre)[d], 0.0, 1e-10);
 
   const double e = 0.01, g = e + 0.5 * e * e;
@@ -191,7 +200,8 @@ TEST_F(ElasticCorrespondenceLattice, RotationIsStressFreeAndUnrotatedStressIsFra
                         0,
                         kLambda * g / (1 + e)};
   const double tol = 1e-10 * kK * e;
-  expectTensorNear(nodeTensor(pr, "Unrotated_Cauchy_Stress", 9, kCentre), su, tol, "R^T sigma R");
+  expectTensorNear(nodeTensor(pr, "Unrotated_Cauchy_Stress", 9, kCentre), su, tol,
+                   "stretch + rotation R^T sigma R", kK * e);
   double tmp[9], sigma[9];
   correspondence::multiply(R, su, tmp);
   correspondence::multiplyTransposed(tmp, R, sigma);  // R su R^T
