@@ -93,6 +93,12 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     s_.evaluator->nodeDamage(out.data());
   } else if (name == "Dilatation" || name == "Weighted_Volume" || name == "Lambda") {
     copy(s_.fields->node(name, 1));
+  } else if (name.size() == 22 && name.compare(0, 20, "Deformation_Gradient") == 0) {
+    // One component (Peridigm's compute output): row and column from the suffix.
+    std::vector<double> full;
+    nodeVariable("Deformation_Gradient", full);
+    const int k = 3 * (name[20] - 'X') + (name[21] - 'X');
+    for (int i = 0; i < n; ++i) out[i] = full[9 * static_cast<std::size_t>(i) + k];
   } else if (name == "Deformation_Gradient") {
     // The correspondence models' own F (with bond damage); elsewhere Peridigm's compute:
     // F = N K^-1 from the current positions, zero where the shape tensor is singular.

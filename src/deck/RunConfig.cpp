@@ -242,6 +242,16 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Deformation_Gradient", 9,
        "deformation gradient F (correspondence models; for other models F = N K^-1 from the "
        "current positions, without bond damage, as Peridigm's compute)"},
+      // Peridigm's Deformation_Gradient compute registers the components as scalars.
+      {"Deformation_GradientXX", 1, "component XX of Deformation_Gradient"},
+      {"Deformation_GradientXY", 1, "component XY of Deformation_Gradient"},
+      {"Deformation_GradientXZ", 1, "component XZ of Deformation_Gradient"},
+      {"Deformation_GradientYX", 1, "component YX of Deformation_Gradient"},
+      {"Deformation_GradientYY", 1, "component YY of Deformation_Gradient"},
+      {"Deformation_GradientYZ", 1, "component YZ of Deformation_Gradient"},
+      {"Deformation_GradientZX", 1, "component ZX of Deformation_Gradient"},
+      {"Deformation_GradientZY", 1, "component ZY of Deformation_Gradient"},
+      {"Deformation_GradientZZ", 1, "component ZZ of Deformation_Gradient"},
       {"Shape_Tensor_Inverse", 9, "inverse of the shape tensor K (correspondence models)"},
       {"Cauchy_Stress", 9, "Cauchy stress (correspondence models)"},
       {"Unrotated_Cauchy_Stress", 9,

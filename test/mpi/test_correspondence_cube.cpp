@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "app/Simulation.hpp"
+#include "core/Error.hpp"
 #include "deck/Deck.hpp"
 
 namespace peridot {
@@ -80,6 +81,65 @@ TEST(CorrespondenceCubeDeck, EveryPointFollowsTheScalarReturnMapping) {
   EXPECT_LT(global[0] / sigmaY, 1e-6) << global[0];
   EXPECT_LT(global[1] / largest, 1e-6) << global[1];
   EXPECT_LT(global[2], 1e-5) << global[2];  // the O(e) frame change, e < 1.3e-6
+}
+
+}  // namespace
+}  // namespace peridot
+
+namespace peridot {
+namespace {
+
+// Peridigm's Deformation_Gradient compute on an ordinary model: the PlasticCube deck turned into
+// an "Elastic" (LPS) block under simple shear u_x = g z (all points prescribed) at 1-3 ranks.
+// Every point's F (component outputs included) is I + g e_x (x) e_z — surface points too, F
+// being exact for an affine motion — and the correspondence-only outputs are refused.
+TEST(DeformationGradientOutput, ElasticBlockUnderSimpleShearAtAnyRankCount) {
+  auto deck =
+      loadDeck(std::string(PERIDOT_TEST_DIR) + "/regression/decks/PlasticCube/PlasticCube.xml");
+  std::ostringstream ids;
+  for (int i = 1; i <= 2744; ++i) ids << i << ' ';
+  auto& bcs = deck->sublist("Boundary Conditions");
+  bcs.set("All Node Set", ids.str());
+  bcs.sublist("Strain Z").set("Value", "0.0");
+  bcs.sublist("Fix X").set("Value", "1.0e-3*t*z");
+  auto& metal = deck->sublist("Materials").sublist("Metal");
+  metal.set("Material Model", "Elastic");
+  metal.remove("Yield Stress");
+  deck->sublist("Solver").set("Final Time", 1.0);
+  deck->remove("Output");
+  Simulation sim(readRunConfig(*deck), MPI_COMM_WORLD, runLog);
+  sim.run();
+  std::vector<double> F, xz, yy;
+  sim.variables().nodeVariable("Deformation_Gradient", F);
+  sim.variables().nodeVariable("Deformation_GradientXZ", xz);
+  sim.variables().nodeVariable("Deformation_GradientYY", yy);
+  const double g = 1e-3;  // at t = 1
+  const double expected[9] = {1, 0, g, 0, 1, 0, 0, 0, 1};
+  double worst = 0;
+  for (int i = 0; i < sim.topology().numOwned; ++i) {
+    for (int k = 0; k < 9; ++k) worst = std::max(worst, std::abs(F[9 * i + k] - expected[k]));
+    EXPECT_EQ(xz[i], F[9 * i + 2]);
+    EXPECT_EQ(yy[i], F[9 * i + 4]);
+  }
+  double global = 0;
+  MPI_Allreduce(&worst, &global, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  EXPECT_LT(global, 1e-13);
+
+  auto bad =
+      loadDeck(std::string(PERIDOT_TEST_DIR) + "/regression/decks/PlasticCube/PlasticCube.xml");
+  bad->sublist("Materials").sublist("Metal").set("Material Model", "Elastic");
+  bad->sublist("Materials").sublist("Metal").remove("Yield Stress");
+  bad->sublist("Boundary Conditions").set("All Node Set", ids.str());
+  auto& vars = bad->sublist("Output").sublist("Output Variables");
+  vars.remove("Lambda");
+  vars.set("Cauchy_Stress", true);
+  try {
+    Simulation s(readRunConfig(*bad), MPI_COMM_WORLD, runLog);
+    FAIL() << "Cauchy_Stress without a correspondence material";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs a correspondence material"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
