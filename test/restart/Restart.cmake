@@ -38,3 +38,6 @@ peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
 # Elastic-plastic history (bond fields and the node field Lambda) across a restart.
 peridot_restart_test(split_plastic split Plastic.yaml.in 16.0 8.0 10 "Lambda")
 peridot_restart_test(split_visco split Visco.yaml.in 16.0 8.0 10 "Dilatation")
+# Correspondence plastic history (9-component node field E^p and eps_p) across a restart.
+peridot_restart_test(split_correspondence split Correspondence.yaml.in 16.0 8.0 10
+                     "Equivalent_Plastic_Strain")
