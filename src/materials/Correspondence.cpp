@@ -79,27 +79,71 @@ double vonMises(const double* a) {
   return std::sqrt(1.5 * ss);
 }
 
-bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
-                                       bool useDamage) {
+namespace {
+
+// K (symmetric: 6 sums) and N over point i's bonds, one vectorisable pass; the options are
+// compile-time so that the loop has no branch.
+template <bool kDamage, bool kSides, bool kInfluence>
+void shapeSums(const ModelState& s, int i, double* K, double* N) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  double K[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, N[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-  const double* xi0 = s.x + 3 * i;
-  const double* yi0 = s.y + 3 * i;
+  const double* x = s.x;
+  const double* y = s.y;
+  const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+  const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  double k00 = 0, k01 = 0, k02 = 0, k11 = 0, k12 = 0, k22 = 0;
+  double n00 = 0, n01 = 0, n02 = 0, n10 = 0, n11 = 0, n12 = 0, n20 = 0, n21 = 0, n22 = 0;
+#pragma omp simd reduction(+ : k00, k01, k02, k11, k12, k22, n00, n01, n02, n10, n11, n12, n20, \
+                               n21, n22)
   for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
     const int j = neighbors[b];
     double w = s.volume[j];
-    if (s.influence) w *= s.influence[b];
-    if (useDamage && s.bondDamage) w *= 1.0 - s.bondDamage[b];
-    if (s.bondSides) w *= (s.bondSides[b] & 1);
-    const double xi[3] = {s.x[3 * j] - xi0[0], s.x[3 * j + 1] - xi0[1], s.x[3 * j + 2] - xi0[2]};
-    const double Y[3] = {s.y[3 * j] - yi0[0], s.y[3 * j + 1] - yi0[1], s.y[3 * j + 2] - yi0[2]};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        K[3 * r + c] += w * xi[r] * xi[c];
-        N[3 * r + c] += w * Y[r] * xi[c];
-      }
+    if constexpr (kInfluence) w *= s.influence[b];
+    if constexpr (kDamage) w *= 1.0 - s.bondDamage[b];
+    if constexpr (kSides) w *= (s.bondSides[b] & 1);
+    const double e0 = x[3 * j] - xi0, e1 = x[3 * j + 1] - xi1, e2 = x[3 * j + 2] - xi2;
+    const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+    const double w0 = w * e0, w1 = w * e1, w2 = w * e2;
+    k00 += w0 * e0;
+    k01 += w0 * e1;
+    k02 += w0 * e2;
+    k11 += w1 * e1;
+    k12 += w1 * e2;
+    k22 += w2 * e2;
+    n00 += Y0 * w0;
+    n01 += Y0 * w1;
+    n02 += Y0 * w2;
+    n10 += Y1 * w0;
+    n11 += Y1 * w1;
+    n12 += Y1 * w2;
+    n20 += Y2 * w0;
+    n21 += Y2 * w1;
+    n22 += Y2 * w2;
   }
+  const double k[9] = {k00, k01, k02, k01, k11, k12, k02, k12, k22};
+  const double n[9] = {n00, n01, n02, n10, n11, n12, n20, n21, n22};
+  std::copy(k, k + 9, K);
+  std::copy(n, n + 9, N);
+}
+
+template <bool kDamage, bool kSides>
+void shapeSums(const ModelState& s, int i, double* K, double* N) {
+  if (s.influence)
+    shapeSums<kDamage, kSides, true>(s, i, K, N);
+  else
+    shapeSums<kDamage, kSides, false>(s, i, K, N);
+}
+
+}  // namespace
+
+bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
+                                       bool useDamage) {
+  double K[9], N[9];
+  const bool damage = useDamage && s.bondDamage;
+  if (damage)
+    s.bondSides ? shapeSums<true, true>(s, i, K, N) : shapeSums<true, false>(s, i, K, N);
+  else
+    s.bondSides ? shapeSums<false, true>(s, i, K, N) : shapeSums<false, false>(s, i, K, N);
   if (!invert(K, Kinv)) {
     std::fill(F, F + 9, 0.0);
     return false;
@@ -164,6 +208,13 @@ std::vector<std::string> CorrespondenceMaterial::outputFields() const {
 
 void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<int>& points) {
   checkDimension(s, name_);
+  // C = 18 c_hg K / (pi delta^4) of every overlap point (the horizon is known on all of them).
+  hourglassConstant_.resize(static_cast<std::size_t>(s.topology->numOverlap));
+  for (int p = 0; p < s.topology->numOverlap; ++p) {
+    const double d = s.horizon[p];
+    hourglassConstant_[p] =
+        18.0 * hourglassCoefficient_ * constants_.bulkModulus / (kPi * d * d * d * d);
+  }
   std::string message;
   for (int i : points) {
     double F[9];
@@ -265,68 +316,80 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
 }
 
 void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector<int>& points) {
+  const bool damage = s.bondDamage != nullptr, sides = s.bondSides != nullptr;
+  if (s.influence) {
+    if (damage)
+      sides ? forceLoop<true, true, true>(s, points) : forceLoop<true, false, true>(s, points);
+    else
+      sides ? forceLoop<false, true, true>(s, points) : forceLoop<false, false, true>(s, points);
+  } else {
+    if (damage)
+      sides ? forceLoop<true, true, false>(s, points) : forceLoop<true, false, false>(s, points);
+    else
+      sides ? forceLoop<false, true, false>(s, points) : forceLoop<false, false, false>(s, points);
+  }
+  commitHistory(points);
+}
+
+// f_i = sum_j [(w_ij A_i + w_ji A_j) xi + (1 - d)(C_i (Y - F_i xi).Y + C_j (Y - F_j xi).Y)
+// / (|xi| |Y|) Y] V_j, with (Y - F xi).Y = |Y|^2 - Y.(F xi); one vectorisable pass.
+template <bool kDamage, bool kSides, bool kInfluence>
+void CorrespondenceMaterial::forceLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double *A0 = aRow_[0], *A1 = aRow_[1], *A2 = aRow_[2];
   const double *F0 = fRow_[0], *F1 = fRow_[1], *F2 = fRow_[2];
-  const double hourglassScale =
-      18.0 * hourglassCoefficient_ * constants_.bulkModulus / kPi;  // / delta^4 per end
+  const double* C = hourglassConstant_.data();
+  const double* x = s.x;
+  const double* y = s.y;
   for (int i : points) {
-    const double* xi0 = s.x + 3 * i;
-    const double* yi0 = s.y + 3 * i;
-    const double Ai[9] = {A0[3 * i],     A0[3 * i + 1], A0[3 * i + 2], A1[3 * i],    A1[3 * i + 1],
-                          A1[3 * i + 2], A2[3 * i],     A2[3 * i + 1], A2[3 * i + 2]};
-    const double Fi[9] = {F0[3 * i],     F0[3 * i + 1], F0[3 * i + 2], F1[3 * i],    F1[3 * i + 1],
-                          F1[3 * i + 2], F2[3 * i],     F2[3 * i + 1], F2[3 * i + 2]};
-    const double di = s.horizon[i];
-    const double Ci = hourglassScale / (di * di * di * di);
+    const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double a00 = A0[3 * i], a01 = A0[3 * i + 1], a02 = A0[3 * i + 2];
+    const double a10 = A1[3 * i], a11 = A1[3 * i + 1], a12 = A1[3 * i + 2];
+    const double a20 = A2[3 * i], a21 = A2[3 * i + 1], a22 = A2[3 * i + 2];
+    const double g00 = F0[3 * i], g01 = F0[3 * i + 1], g02 = F0[3 * i + 2];
+    const double g10 = F1[3 * i], g11 = F1[3 * i + 1], g12 = F1[3 * i + 2];
+    const double g20 = F2[3 * i], g21 = F2[3 * i + 1], g22 = F2[3 * i + 2];
+    const double Ci = C[i];
     double f0 = 0, f1 = 0, f2 = 0, h0 = 0, h1 = 0, h2 = 0;
+#pragma omp simd reduction(+ : f0, f1, f2, h0, h1, h2)
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
-      const double Aj[9] = {A0[3 * j], A0[3 * j + 1], A0[3 * j + 2],
-                            A1[3 * j], A1[3 * j + 1], A1[3 * j + 2],
-                            A2[3 * j], A2[3 * j + 1], A2[3 * j + 2]};
-      const double Fj[9] = {F0[3 * j], F0[3 * j + 1], F0[3 * j + 2],
-                            F1[3 * j], F1[3 * j + 1], F1[3 * j + 2],
-                            F2[3 * j], F2[3 * j + 1], F2[3 * j + 2]};
-      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      const double omega = s.influence ? s.influence[b] : 1.0;
-      const double ownI = s.bondSides ? (s.bondSides[b] & 1) : 1.0;
-      const double ownJ = s.bondSides ? ((s.bondSides[b] >> 1) & 1) : 1.0;
+      const double intact = kDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double omega = kInfluence ? s.influence[b] : 1.0;
+      const double ownI = kSides ? (s.bondSides[b] & 1) : 1.0;
+      const double ownJ = kSides ? ((s.bondSides[b] >> 1) & 1) : 1.0;
       const double wI = ownI * omega * intact, wJ = ownJ * omega * intact;
-      const double xi[3] = {s.x[3 * j] - xi0[0], s.x[3 * j + 1] - xi0[1], s.x[3 * j + 2] - xi0[2]};
-      const double Y[3] = {s.y[3 * j] - yi0[0], s.y[3 * j + 1] - yi0[1], s.y[3 * j + 2] - yi0[2]};
+      const double e0 = x[3 * j] - xi0, e1 = x[3 * j + 1] - xi1, e2 = x[3 * j + 2] - xi2;
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double vj = s.volume[j];
       // T_i<xi> - T_j<-xi> = (w_ij A_i + w_ji A_j) xi
-      double t[3];
-      for (int r = 0; r < 3; ++r)
-        t[r] = wI * (Ai[3 * r] * xi[0] + Ai[3 * r + 1] * xi[1] + Ai[3 * r + 2] * xi[2]) +
-               wJ * (Aj[3 * r] * xi[0] + Aj[3 * r + 1] * xi[1] + Aj[3 * r + 2] * xi[2]);
-      f0 += t[0] * vj;
-      f1 += t[1] * vj;
-      f2 += t[2] * vj;
+      const double t0 = wI * (a00 * e0 + a01 * e1 + a02 * e2) +
+                        wJ * (A0[3 * j] * e0 + A0[3 * j + 1] * e1 + A0[3 * j + 2] * e2);
+      const double t1 = wI * (a10 * e0 + a11 * e1 + a12 * e2) +
+                        wJ * (A1[3 * j] * e0 + A1[3 * j + 1] * e1 + A1[3 * j + 2] * e2);
+      const double t2 = wI * (a20 * e0 + a21 * e1 + a22 * e2) +
+                        wJ * (A2[3 * j] * e0 + A2[3 * j + 1] * e1 + A2[3 * j + 2] * e2);
+      f0 += t0 * vj;
+      f1 += t1 * vj;
+      f2 += t2 * vj;
       // Hourglass: each end's spring on the part of Y its F does not predict.
-      const double YY = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
-      if (Ci > 0 && YY > 0) {
-        double dotI = 0, dotJ = 0;
-        for (int r = 0; r < 3; ++r) {
-          const double predictedI =
-              Fi[3 * r] * xi[0] + Fi[3 * r + 1] * xi[1] + Fi[3 * r + 2] * xi[2];
-          const double predictedJ =
-              Fj[3 * r] * xi[0] + Fj[3 * r + 1] * xi[1] + Fj[3 * r + 2] * xi[2];
-          dotI += (Y[r] - predictedI) * Y[r];
-          dotJ += (Y[r] - predictedJ) * Y[r];
-        }
-        const double dj = s.horizon[j];
-        const double Cj = hourglassScale / (dj * dj * dj * dj);
-        const double zeta = s.bondLength[b];
-        // Peridigm's scaling: C dot / (|xi| |Y|) times the deformed bond Y itself.
-        const double magnitude =
-            intact * (ownI * Ci * dotI + ownJ * Cj * dotJ) / (zeta * std::sqrt(YY)) * vj;
-        h0 += magnitude * Y[0];
-        h1 += magnitude * Y[1];
-        h2 += magnitude * Y[2];
-      }
+      const double YY = Y0 * Y0 + Y1 * Y1 + Y2 * Y2;
+      const double YFiXi = Y0 * (g00 * e0 + g01 * e1 + g02 * e2) +
+                           Y1 * (g10 * e0 + g11 * e1 + g12 * e2) +
+                           Y2 * (g20 * e0 + g21 * e1 + g22 * e2);
+      const double YFjXi = Y0 * (F0[3 * j] * e0 + F0[3 * j + 1] * e1 + F0[3 * j + 2] * e2) +
+                           Y1 * (F1[3 * j] * e0 + F1[3 * j + 1] * e1 + F1[3 * j + 2] * e2) +
+                           Y2 * (F2[3 * j] * e0 + F2[3 * j + 1] * e1 + F2[3 * j + 2] * e2);
+      const double cI = ownI * Ci, cJ = ownJ * C[j];
+      // Peridigm's scaling: C dot / (|xi| |Y|) times the deformed bond Y itself; coincident
+      // ends (Y = 0) carry none.
+      const double scale = YY > 0 ? intact * vj / (s.bondLength[b] * std::sqrt(YY)) : 0.0;
+      const double magnitude = (cI * (YY - YFiXi) + cJ * (YY - YFjXi)) * scale;
+      h0 += magnitude * Y0;
+      h1 += magnitude * Y1;
+      h2 += magnitude * Y2;
     }
     hourglass_[3 * i] = h0;
     hourglass_[3 * i + 1] = h1;
@@ -335,7 +398,6 @@ void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector
     s.forceDensity[3 * i + 1] = f1 + h1;
     s.forceDensity[3 * i + 2] = f2 + h2;
   }
-  commitHistory(points);
 }
 
 void CorrespondenceMaterial::storedEnergyDensity(const ModelState&, const std::vector<int>& points,

@@ -120,6 +120,9 @@ class CorrespondenceMaterial : public MaterialModel {
   double* unrotated_ = nullptr;
   double* vonMises_ = nullptr;
   double* hourglass_ = nullptr;
+  template <bool kDamage, bool kSides, bool kInfluence>
+  void forceLoop(const ModelState& state, const std::vector<int>& points);
+  std::vector<double> hourglassConstant_;  // per overlap point: 18 c_hg K / (pi delta^4)
   double* fRow_[3] = {nullptr, nullptr, nullptr};
   double* aRow_[3] = {nullptr, nullptr, nullptr};
 };
