@@ -160,7 +160,7 @@ std::string describePoint(const ModelState& s, int i) {
     if (!s.bondDamage || s.bondDamage[b] < 1.0f) ++intact;
   }
   char text[256];
-  std::snprintf(text, sizeof text, "point %lld at (%.6g, %.6g, %.6g) has %d intact bonds of %d",
+  std::snprintf(text, sizeof text, "point %lld at (%.6g, %.6g, %.6g) (%d intact bonds of %d)",
                 s.topology->overlapGlobalId[i] + 1, s.x[3 * i], s.x[3 * i + 1], s.x[3 * i + 2],
                 intact, total);
   return text;
@@ -220,11 +220,12 @@ void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<i
     double F[9];
     if (!correspondence::shapeTensorAndDeformationGradient(s, i, shapeTensorInverse_ + 9 * i, F) &&
         message.empty()) {
-      message = "Materials -> \"" + name_ + "\": the shape tensor of " +
-                correspondence::describePoint(s, i) +
-                ": a correspondence model needs at least three non-coplanar neighbours per "
-                "point (as Peridigm, which stops with \"failed to compute shape tensor\"); is "
-                "the horizon too small?";
+      message =
+          "Materials -> \"" + name_ + "\": the shape tensor of " +
+          correspondence::describePoint(s, i) +
+          " is singular: a correspondence model needs at least three non-coplanar neighbours per "
+          "point (as Peridigm, which stops with \"failed to compute shape tensor\"); is "
+          "the horizon too small?";
     }
     for (int k = 0; k < 9; ++k) {
       deformationGradient_[9 * i + k] = (k % 4 == 0) ? 1.0 : 0.0;
@@ -264,7 +265,8 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
         std::snprintf(when, sizeof when, " at time %.9g", s.time);
         message = "Materials -> \"" + name_ + "\": the shape tensor of " + describePoint(s, i) +
                   " became singular" + when +
-                  " (fewer than three non-coplanar intact bonds); Peridigm stops here too "
+                  ": its intact bonds no longer span three non-coplanar directions; Peridigm stops "
+                  "here too "
                   "(\"failed to compute shape tensor\")";
       }
       for (int k = 0; k < 9; ++k) fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;

@@ -54,7 +54,7 @@ double vonMises(const double* a);
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
                                        bool useDamage = true);
 
-// "<point id> at (x, y, z) has N intact bonds of M": the diagnostic's description of a point.
+// "point <id> at (x, y, z) (N intact bonds of M)": the diagnostics' description of a point.
 std::string describePoint(const ModelState& s, int i);
 
 }  // namespace correspondence
