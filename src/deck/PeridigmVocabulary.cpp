@@ -44,8 +44,6 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
-      "Left_Stretch_Tensor",
-      "Rotation_Tensor",
       "Unrotated_Rate_Of_Deformation",
       "Velocity_Gradient",
       "Jacobian_Determinant",

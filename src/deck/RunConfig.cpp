@@ -257,6 +257,8 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Unrotated_Cauchy_Stress", 9,
        "Cauchy stress in the frame of F's polar rotation, R^T sigma R"},
       {"Von_Mises_Stress", 1, "von Mises stress of the Cauchy stress (correspondence models)"},
+      {"Rotation_Tensor", 9, "rotation R of the polar decomposition F = R U (correspondence)"},
+      {"Left_Stretch_Tensor", 9, "left stretch V = F R^T (correspondence models)"},
       {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
       {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},

@@ -195,6 +195,8 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
   unrotated_ = fields.node(kUnrotatedCauchyStress, 9);
   vonMises_ = fields.node(kVonMisesStress, 1);
   hourglass_ = fields.node(kHourglassForceDensity, 3);
+  rotation_ = fields.node(kRotationTensor, 9);
+  leftStretch_ = fields.node(kLeftStretchTensor, 9);
   for (int r = 0; r < 3; ++r) {
     fRow_[r] = fields.node(kDeformationGradientRows[r], 3);
     aRow_[r] = fields.node(kForceTensorRows[r], 3);
@@ -202,8 +204,8 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
 }
 
 std::vector<std::string> CorrespondenceMaterial::outputFields() const {
-  return {kShapeTensorInverse,    kDeformationGradient, kCauchyStress,
-          kUnrotatedCauchyStress, kVonMisesStress,      kHourglassForceDensity};
+  return {kShapeTensorInverse, kDeformationGradient,   kCauchyStress,   kUnrotatedCauchyStress,
+          kVonMisesStress,     kHourglassForceDensity, kRotationTensor, kLeftStretchTensor};
 }
 
 void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<int>& points) {
@@ -228,7 +230,8 @@ void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<i
           "the horizon too small?";
     }
     for (int k = 0; k < 9; ++k) {
-      deformationGradient_[9 * i + k] = (k % 4 == 0) ? 1.0 : 0.0;
+      deformationGradient_[9 * i + k] = rotation_[9 * i + k] = leftStretch_[9 * i + k] =
+          (k % 4 == 0) ? 1.0 : 0.0;
       cauchy_[9 * i + k] = unrotated_[9 * i + k] = 0.0;
       fRow_[k / 3][3 * i + k % 3] = deformationGradient_[9 * i + k];
       aRow_[k / 3][3 * i + k % 3] = 0.0;
@@ -304,12 +307,15 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
         for (int r = 0; r < 3; ++r)
           for (int c = 0; c < 3; ++c)
             unrotated[3 * r + c] = R[r] * tmp[c] + R[3 + r] * tmp[3 + c] + R[6 + r] * tmp[6 + c];
+        std::copy(R, R + 9, rotation_ + 9 * i);
+        multiplyTransposed(F, R, leftStretch_ + 9 * i);  // V = F R^T
       } else {
         std::copy(sigma, sigma + 9, unrotated);
       }
     } else {
       // An inverted or flattened point: the force (from P) stays defined, the Cauchy stress
-      // does not; report the Piola-Kirchhoff stress's symmetric part rather than a NaN.
+      // and the polar decomposition do not; report S for sigma rather than a NaN, and keep the
+      // last rotation and stretch.
       for (int k = 0; k < 9; ++k) sigma[k] = unrotated[k] = S[k];
     }
     vonMises_[i] = vonMises(sigma);

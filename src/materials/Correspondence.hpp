@@ -88,6 +88,9 @@ class CorrespondenceMaterial : public MaterialModel {
   static constexpr const char* kUnrotatedCauchyStress = "Unrotated_Cauchy_Stress";
   static constexpr const char* kVonMisesStress = "Von_Mises_Stress";
   static constexpr const char* kHourglassForceDensity = "Hourglass_Force_Density";
+  // The polar decomposition F = R U = V R.
+  static constexpr const char* kRotationTensor = "Rotation_Tensor";
+  static constexpr const char* kLeftStretchTensor = "Left_Stretch_Tensor";
   // Per point, ghosted, by rows (ghost refreshes move 1- or 3-component fields): F, and
   // A = P K^-1, the tensor that maps a bond xi to the force state.
   static constexpr const char* kDeformationGradientRows[3] = {
@@ -120,6 +123,8 @@ class CorrespondenceMaterial : public MaterialModel {
   double* unrotated_ = nullptr;
   double* vonMises_ = nullptr;
   double* hourglass_ = nullptr;
+  double* rotation_ = nullptr;
+  double* leftStretch_ = nullptr;
   template <bool kDamage, bool kSides, bool kInfluence>
   void forceLoop(const ModelState& state, const std::vector<int>& points);
   std::vector<double> hourglassConstant_;  // per overlap point: 18 c_hg K / (pi delta^4)

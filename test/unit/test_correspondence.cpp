@@ -206,6 +206,12 @@ TEST_F(ElasticCorrespondenceLattice, RotationIsStressFreeAndUnrotatedStressIsFra
   correspondence::multiply(R, su, tmp);
   correspondence::multiplyTransposed(tmp, R, sigma);  // R su R^T
   expectTensorNear(nodeTensor(pr, "Cauchy_Stress", 9, kCentre), sigma, tol, "sigma");
+  // The polar decomposition: R, and V = F R^T = R U R^T.
+  expectTensorNear(nodeTensor(pr, "Rotation_Tensor", 9, kCentre), R, 1e-12, "R");
+  double V[9];
+  correspondence::multiply(R, U, tmp);
+  correspondence::multiplyTransposed(tmp, R, V);
+  expectTensorNear(nodeTensor(pr, "Left_Stretch_Tensor", 9, kCentre), V, 1e-12, "V");
 }
 
 // A non-affine motion: moving the centre alone brings a hourglass force that pulls it back.
