@@ -1,7 +1,7 @@
 // Cost of one force evaluation (precompute + force, as the evaluator runs them on one rank) per
-// bond entry for each ordinary state-based model, against "Elastic" (LPS) on the same scene: a
-// 40^3 cube, delta = 3.015 dx, stretched anisotropically (deviatoric strain ~1e-4) so that the
-// plastic models yield at every step (sigma_Y = 1e-6 G) and take their plastic branch.
+// bond entry for each ordinary state-based and correspondence model, against "Elastic" (LPS) on the
+// same scene: a 40^3 cube, delta = 3.015 dx, stretched anisotropically (deviatoric strain ~1e-4) so
+// that the plastic models yield at every step (sigma_Y = 1e-6 G) and take their plastic branch.
 // Usage: bench_material_cost [--benchmark_min_time=1] [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
 #include <mpi.h>
@@ -54,8 +54,11 @@ struct Scene {
     m.set("Density", 1.0);
     m.set("Bulk Modulus", 5.0 / 3.0);
     m.set("Shear Modulus", 1.0);
-    if (model.find("Plastic") != std::string::npos) m.set("Yield Stress", 1e-6);
+    if (model.find("Plastic") != std::string::npos || model.find("Hardening") != std::string::npos)
+      m.set("Yield Stress", 1e-6);
     if (model == "Elastic Plastic Hardening") m.set("Hardening Modulus", 1e-16);
+    if (model.find("Correspondence") != std::string::npos) m.set("Hourglass Coefficient", 0.02);
+    if (model == "Isotropic Hardening Correspondence") m.set("Hardening Modulus", 0.01);
     if (model == "Viscoelastic") {
       m.set("lambda_i", 0.5);
       m.set("tau b", 10.0);
@@ -98,6 +101,14 @@ BENCHMARK_CAPTURE(Evaluate, ElasticPlasticHardening, std::string("Elastic Plasti
 BENCHMARK_CAPTURE(Evaluate, Viscoelastic, std::string("Viscoelastic"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Evaluate, Pals, std::string("Pals"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticCorrespondence, std::string("Elastic Correspondence"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticPlasticCorrespondence,
+                  std::string("Elastic Plastic Correspondence"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, IsotropicHardeningCorrespondence,
+                  std::string("Isotropic Hardening Correspondence"))
+    ->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);

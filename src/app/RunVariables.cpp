@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "deck/RunConfig.hpp"
+#include "materials/Correspondence.hpp"
 
 namespace peridot {
 
@@ -97,6 +98,33 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
              name.find("_Normalization") != std::string::npos) {
     // Fields of a material or damage model (Pals, Interface Aware): 0 at points without one.
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, 1));
+  } else if (name.size() == 22 && name.compare(0, 20, "Deformation_Gradient") == 0) {
+    // One component (Peridigm's compute output): row and column from the suffix.
+    std::vector<double> full;
+    nodeVariable("Deformation_Gradient", full);
+    const int k = 3 * (name[20] - 'X') + (name[21] - 'X');
+    for (int i = 0; i < n; ++i) out[i] = full[9 * static_cast<std::size_t>(i) + k];
+  } else if (name == "Deformation_Gradient") {
+    // The correspondence models' own F (with bond damage); elsewhere Peridigm's compute:
+    // F = N K^-1 from the current positions, zero where the shape tensor is singular.
+    const double* own = s_.fields->hasNode(name) ? s_.fields->node(name, 9) : nullptr;
+    const ModelState& state = s_.evaluator->state();
+    double Kinv[9];
+    for (int i = 0; i < n; ++i) {
+      const bool model =
+          own && (*s_.blocks)[(*s_.blockIndexOfPoint)[i]].material->family() == "correspondence";
+      if (model)
+        std::copy(own + 9 * i, own + 9 * i + 9, out.begin() + 9 * i);
+      else
+        correspondence::shapeTensorAndDeformationGradient(state, i, Kinv, out.data() + 9 * i,
+                                                          false);
+    }
+  } else if (name == "Shape_Tensor_Inverse" || name == "Cauchy_Stress" ||
+             name == "Unrotated_Cauchy_Stress" || name == "Von_Mises_Stress" ||
+             name == "Hourglass_Force_Density" || name == "Equivalent_Plastic_Strain" ||
+             name == "Rotation_Tensor" || name == "Left_Stretch_Tensor") {
+    // Maintained by the correspondence models (zero at the points of other blocks).
+    if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
   } else if (name == "Kinetic_Energy") {
     for (int i = 0; i < n; ++i) {
       const double v2 =

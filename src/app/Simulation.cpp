@@ -485,6 +485,15 @@ void Simulation::checkVariables() {
     if (palsField && !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a \"Pals\" material");
     }
+    if ((v == "Shape_Tensor_Inverse" || v == "Cauchy_Stress" || v == "Unrotated_Cauchy_Stress" ||
+         v == "Von_Mises_Stress" || v == "Hourglass_Force_Density" ||
+         v == "Equivalent_Plastic_Strain" || v == "Rotation_Tensor" ||
+         v == "Left_Stretch_Tensor") &&
+        !modelFields.count(v)) {
+      throw InputError(path, "\"" + v + "\" needs a correspondence material (e.g. \"Elastic " +
+                                 "Correspondence\"" +
+                                 (v == "Equivalent_Plastic_Strain" ? ", a plastic one)" : ")"));
+    }
     if (v == "Lambda" && !modelFields.count(v)) {
       throw InputError(path,
                        "\"Lambda\" needs an elastic-plastic material (e.g. \"Elastic "

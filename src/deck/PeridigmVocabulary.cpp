@@ -45,16 +45,7 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Partial_Stress",
       "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
-      "Cauchy_Stress",
-      "Unrotated_Cauchy_Stress",
-      "Deformation_Gradient",
-      "Shape_Tensor_Inverse",
-      "Hourglass_Force_Density",
-      "Left_Stretch_Tensor",
-      "Rotation_Tensor",
       "Unrotated_Rate_Of_Deformation",
-      "Von_Mises_Stress",
-      "Equivalent_Plastic_Strain",
       "Velocity_Gradient",
       "Jacobian_Determinant",
       "Surface_Correction_Factor",

@@ -44,6 +44,10 @@ void FieldManager::refreshGhosts(const std::string& name) {
   auto it = nodeFields_.find(name);
   if (it == nodeFields_.end()) throw std::logic_error("no node field " + name);
   NodeField& f = it->second;
+  // The imports move 1 or 3 values a point; a wider field (a 3x3 tensor) would be exchanged
+  // wrongly without a word: ghost such a field by rows of 3.
+  if (f.components != 1 && f.components != 3)
+    throw std::logic_error("ghost refresh of " + name + ": only 1 or 3 components a point");
   if (topology_.numRanks > 1) {
     const auto& importer = f.components == 1 ? topology_.ghostImport : topology_.ghostImport3;
     f.ghostView->doImport(*f.ownedView, *importer, Tpetra::INSERT);

@@ -137,16 +137,22 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
     for (const auto& v : f.variables) {
       const int c = source.components(v);
       const bool vector = c == 3 || (c == 0 && source.globalSize(v) == 3);
-      if (v.size() + (vector ? 1 : 0) > kMaxExodusName) {
+      if (v.size() + (vector ? 1 : 0) + (c == 9 ? 2 : 0) > kMaxExodusName) {
         // libexodus would cut the name to 32 characters (two labels could become one).
         const std::string stream = f.deckPath.substr(0, f.deckPath.rfind(" -> "));
         throw InputError(stream + " -> Output Variables -> " + v,
                          "the name is " + std::to_string(v.size()) +
                              " characters long; an Exodus variable name holds at most " +
                              std::to_string(kMaxExodusName) +
-                             (vector ? " (with X, Y or Z appended)" : ""));
+                             (vector   ? " (with X, Y or Z appended)"
+                              : c == 9 ? " (with XX ... ZZ appended)"
+                                       : ""));
       }
-      if (c == 3) {
+      if (c == 9) {
+        // A full tensor: nine element variables, Peridigm's <name>XX, XY, ..., ZZ.
+        for (int r = 0; r < 3; ++r)
+          for (int k = 0; k < 3; ++k) f.header.elementNames.push_back(v + axes[r] + axes[k]);
+      } else if (c == 3) {
         for (int d = 0; d < dimension_; ++d) f.header.nodalNames.push_back(v + axes[d]);
       } else if (c == 1) {
         f.header.elementNames.push_back(v);
@@ -357,6 +363,14 @@ void OutputManager::write(long long step, double time) {
                                return;
                              }
                              component.resize(static_cast<std::size_t>(count));
+                             if (c == 9) {
+                               for (int k = 0; k < 9; ++k) {
+                                 for (long long p = 0; p < count; ++p)
+                                   component[p] = values[9 * p + k];
+                                 f.writer->putElement(element + k, first, count, component.data());
+                               }
+                               return;
+                             }
                              for (int dd = 0; dd < dimension_; ++dd) {
                                for (long long k = 0; k < count; ++k)
                                  component[k] = values[c * k + dd];
@@ -366,6 +380,8 @@ void OutputManager::write(long long step, double time) {
                          });
       if (c == 1)
         ++element;
+      else if (c == 9)
+        element += 9;
       else
         nodal += dimension_;
     }

@@ -69,6 +69,13 @@ peridot_identical(PlasticCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plast
                   PlasticCube.xml PlasticCube.e exact_plastic.comp 2744)
 peridot_identical(PlasticBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PlasticBar
                   PlasticBar.xml PlasticBar.e exact_plastic.comp 0)
+# Correspondence decks (shape tensor, F and P K^-1 ghosted, hourglass forces, plastic history in
+# node fields): bitwise equal at 1-4 ranks; the cube's stresses and plastic strains are also
+# checked against a scalar return mapping (test/mpi/test_correspondence_cube.cpp).
+peridot_identical(CorrespondenceCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/CorrespondenceCube
+                  CorrespondenceCube.xml CorrespondenceCube.e exact_correspondence.comp 2744)
+peridot_identical(CorrespondenceBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/CorrespondenceBar
+                  CorrespondenceBar.xml CorrespondenceBar.e exact_correspondence.comp 0)
 peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
                   ViscoBar.xml ViscoBar.e exact_visco.comp 0)
 # Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent

@@ -344,7 +344,7 @@ TEST(ElasticPlastic, Keys) {
   ListReader r2(p, "Materials -> EP");
   EXPECT_THROW(createMaterial(r2), InputError);
   Teuchos::ParameterList q;
-  q.set("Material Model", "Elastic Plastic Correspondence");
+  q.set("Material Model", "Viscoplastic Needleman Correspondence");
   ListReader r3(q, "Materials -> C");
   try {
     createMaterial(r3);

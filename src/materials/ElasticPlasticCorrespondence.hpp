@@ -1,0 +1,55 @@
+#pragma once
+// "Elastic Plastic Correspondence": the correspondence kinematics (materials/Correspondence.hpp)
+// with J2 plasticity on the Green strain, in the reference frame: E = E^e + E^p, S = lambda
+// tr(E^e) I + 2 mu E^e, yield f = sqrt(3/2) |dev S| - (sigma_Y + H eps_p) <= 0, radial return
+// (backward Euler, exact for linear hardening):
+//   dgamma = f_trial / (3 mu + H),  n = dev S_trial / |dev S_trial|,
+//   S = S_trial - 2 mu sqrt(3/2) dgamma n,  E^p += sqrt(3/2) dgamma n,  eps_p += dgamma.
+// The stress after a plastic step lies on the yield surface to rounding, and eps_p never
+// decreases. History per point: E^p (9) and eps_p (Equivalent_Plastic_Strain), saved in
+// checkpoints. "Isotropic Hardening Correspondence" (derived) adds H and Peridigm's flaw.
+//
+// Peridigm integrates the same return mapping on the unrotated rate of deformation (hypoelastic
+// rate form, Flanagan-Taylor rotation); for small elastic strains the two agree to first order
+// (doc/theory/correspondence.md).
+#include <vector>
+
+#include "materials/Correspondence.hpp"
+
+namespace peridot {
+
+class ElasticPlasticCorrespondence : public CorrespondenceMaterial {
+ public:
+  explicit ElasticPlasticCorrespondence(ListReader& params)
+      : ElasticPlasticCorrespondence(params, "Elastic Plastic Correspondence", false) {}
+  void declareFields(FieldManager& fields) override;
+  void initialize(const ModelState& state, const std::vector<int>& points) override;
+  std::vector<std::string> outputFields() const override;
+  std::vector<std::string> historyNodeFields() const override {
+    return {kEquivalentPlasticStrain, kPlasticStrain};
+  }
+  bool advancesHistory() const override { return true; }
+
+  static constexpr const char* kEquivalentPlasticStrain = "Equivalent_Plastic_Strain";
+  static constexpr const char* kPlasticStrain = "Plastic_Green_Strain";
+
+  // The yield stress of a point at reference position x (the flaw lowers it near its centre).
+  double yieldStressAt(const double* x) const;
+
+ protected:
+  ElasticPlasticCorrespondence(ListReader& params, const std::string& name, bool hardening);
+  void secondPiolaKirchhoff(int i, const double* E, double* S) override;
+  void commitHistory(const std::vector<int>& points) override;
+  double energyDensity(int i, const double* E) const override;
+
+ private:
+  double yieldStress_ = 0.0, hardeningModulus_ = 0.0;
+  bool flaw_ = false;
+  double flawLocation_[3] = {0, 0, 0}, flawSize_ = 1.0, flawMagnitude_ = 0.0;
+  double* eqps_ = nullptr;           // committed eps_p
+  double* plasticStrain_ = nullptr;  // committed E^p, 9 per point
+  // This step's values from the last precompute, committed by computeForce.
+  std::vector<double> eqpsNew_, plasticStrainNew_, yield_;
+};
+
+}  // namespace peridot
