@@ -124,6 +124,7 @@ def main():
     ap.add_argument("--workdir", default="/tmp/peridot-weak")
     ap.add_argument("--json", default=None)
     args = ap.parse_args()
+    args.peridot = os.path.abspath(args.peridot)  # the runs start in their own directories
     dx, dt = 0.5e-3, 5e-8
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     results = []
