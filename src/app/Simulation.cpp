@@ -197,6 +197,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     }
   }
 
+  // The set-up after the search, timed in parts (bench/RESULTS.md splits the set-up).
+  auto fieldsTimer = std::make_unique<Timers::Scope>(timers_, "Setup: fields + models");
   fields_ = std::make_unique<FieldManager>(topology_);
   x_ = fields_->node("Model_Coordinates", 3);
   y_ = fields_->node("Coordinates", 3);
@@ -266,6 +268,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   evaluator_->setBondFilters(&config_.discretization.bondFilters);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
+  fieldsTimer.reset();
 
   std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
                                   topology_.overlapGlobalId.begin() + topology_.numOwned);
@@ -353,7 +356,10 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                    comm_);
   }
 
-  estimateStableTimeStep();
+  {
+    Timers::Scope t(timers_, "Setup: time step estimate");
+    estimateStableTimeStep();
+  }
   const auto& s = config_.solver;
   if (!s.fixedDtGiven && !(stableDt_ < std::numeric_limits<double>::max())) {
     // The estimate sums bond stiffnesses; contact springs depend on where bodies meet and are
@@ -626,6 +632,13 @@ void Simulation::reportSetup() {
   if (!outputs_) openOutputs();
   long long myBonds = topology_.numBonds(), maxBonds = 0;
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
+  // Communication volume: what a rank sends in one ghost exchange of a 3-vector field (the
+  // positions, refreshed once per force evaluation), from the ghost Import's export list.
+  long long sent[2] = {8 * static_cast<long long>(topology_.ghostImport3->getNumExportIDs()),
+                       static_cast<long long>(topology_.numGhosts)};
+  long long sentMax[2] = {0, 0}, sentSum[2] = {0, 0};
+  MPI_Allreduce(sent, sentMax, 2, MPI_LONG_LONG, MPI_MAX, comm_);
+  MPI_Allreduce(sent, sentSum, 2, MPI_LONG_LONG, MPI_SUM, comm_);
   if (rank_ == 0) {
     log_ << "Points: " << topology_.globalNumPoints
          << ", bonds (one-sided): " << topology_.globalNumBonds
@@ -639,6 +652,12 @@ void Simulation::reportSetup() {
       log_ << ", bond imbalance (max/avg): " << text;
     }
     log_ << "\n";
+    if (topology_.numRanks > 1) {
+      log_ << "Ghost points per rank (max/avg): " << sentMax[1] << " / "
+           << sentSum[1] / topology_.numRanks
+           << "; bytes sent per ghost exchange of a 3-vector field, per rank (max/avg): "
+           << sentMax[0] << " / " << sentSum[0] / topology_.numRanks << "\n";
+    }
     if (planar_) log_ << "Planar (2D) run, thickness " << thickness_ << "\n";
     if (s.verletLimitEstimate) {
       log_ << "Stable time step estimate: " << stableDt_ << " (Verlet limit, "

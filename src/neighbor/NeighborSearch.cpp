@@ -7,17 +7,16 @@
 #include <utility>
 #include <vector>
 
-#include "neighbor/PartialVolume.hpp"
+#include "neighbor/PairTest.hpp"
 
 namespace peridot {
 
-namespace {
+using pairtest::boxCells;
+using pairtest::isNeighbor;
+using pairtest::queryTerms;
+using pairtest::QueryTerms;
 
-// Cells per axis of the box rule: Peridigm rounds delta/h half up and caps it at the cell count.
-int boxCells(const NeighborhoodRule& rule, int d, double horizon) {
-  const int n = static_cast<int>(std::floor(horizon / rule.cellSize[d] + 0.5));
-  return std::min(n, rule.cellCount[d]);
-}
+namespace {
 
 constexpr std::uint64_t kMaxCell = (1ULL << 21) - 1;
 
@@ -87,21 +86,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
   }
   std::sort(sorted.begin(), sorted.end());
 
-  const bool box = in.rule.kind == NeighborhoodRule::Kind::CellBox;
-  const bool strict = in.rule.kind == NeighborhoodRule::Kind::SphereStrict;
-  const bool overlap = in.rule.kind == NeighborhoodRule::Kind::CellOverlap;
-  const bool filtered = in.bondFilters && !in.bondFilters->empty();
   for (std::size_t q : queries) {
-    const double* xq = in.x + 3 * q;
-    const double h = in.horizon[q];
-    const double h2 = h * h;
-    double halfBox[3] = {0, 0, 0};
-    if (box)
-      for (int d = 0; d < 3; ++d)
-        halfBox[d] = in.rule.cellCount[d] == 0  // 2D: no z axis, every point has z = 0
-                         ? std::numeric_limits<double>::infinity()
-                         : (boxCells(in.rule, d, h) + 0.5) * in.rule.cellSize[d];
-    const double r = in.unionOfHorizons ? reach : searchReach(in.rule, h);
+    const QueryTerms query = queryTerms(in, q);
+    const double r = in.unionOfHorizons ? reach : searchReach(in.rule, query.h);
     std::uint64_t c0[3], c1[3];
     for (int d = 0; d < 3; ++d) {
       // The range is padded by far more than the rounding of xq +- r, which can land a hair
@@ -110,9 +97,9 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
       // cell grid starts, i.e. on the rank count.
       // Capped at 1e-3 of the reach: for coordinates beyond 1e11 reaches (a degenerate mesh) the
       // scan must stay within a few cells, not sweep the clamped grid.
-      const double pad = std::min(1e-14 * (std::fabs(xq[d]) + r), 1e-3 * r);
-      c0[d] = cellIndex(xq[d] - r - pad, d);
-      const double upper = xq[d] + r + pad;
+      const double pad = std::min(1e-14 * (std::fabs(query.x[d]) + r), 1e-3 * r);
+      c0[d] = cellIndex(query.x[d] - r - pad, d);
+      const double upper = query.x[d] + r + pad;
       c1[d] = std::isnan(upper) ? maxCell[d] : std::min(maxCell[d], cellIndex(upper, d));
     }
     for (std::uint64_t cz = c0[2]; cz <= c1[2]; ++cz)
@@ -123,35 +110,7 @@ void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
                                    std::make_pair(keyOf(c0[0], cy, cz), std::size_t{0}));
         for (; it != sorted.end() && it->first <= last; ++it) {
           const std::size_t j = it->second;
-          if (j == q) continue;
-          const double* xj = in.x + 3 * j;
-          const double dx = xj[0] - xq[0], dy = xj[1] - xq[1], dz = xj[2] - xq[2];
-          bool inside;
-          if (box) {
-            inside = std::fabs(dx) < halfBox[0] && std::fabs(dy) < halfBox[1] &&
-                     std::fabs(dz) < halfBox[2];
-          } else if (overlap) {
-            const double xi[3] = {dx, dy, dz};
-            inside = cellOverlapsHorizon(xi, in.cellEdge[j], h, in.rule.dimension);
-          } else {
-            const double d2 = dx * dx + dy * dy + dz * dz;
-            const double hj2 =
-                in.unionOfHorizons ? std::max(h2, in.horizon[j] * in.horizon[j]) : h2;
-            inside = strict ? d2 < hj2 : d2 <= hj2;
-          }
-          if (!inside) continue;
-          if (in.omitBondsBetweenBlocks && in.blockId[j] != in.blockId[q]) continue;
-          if (filtered) {
-            bool cut = false;
-            for (std::size_t k = 0; k < in.bondFilters->size(); ++k)
-              if ((*in.bondFilters)[k].cuts(xq, xj)) {
-                cut = true;
-                if (in.bondFilterCuts) ++(*in.bondFilterCuts)[k];
-                break;
-              }
-            if (cut) continue;
-          }
-          neighbors.push_back(j);
+          if (j != q && isNeighbor(in, query, j)) neighbors.push_back(j);
         }
       }
     offsets.push_back(static_cast<long long>(neighbors.size()));

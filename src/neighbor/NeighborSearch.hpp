@@ -1,6 +1,7 @@
 #pragma once
 // Cell-list neighbour search: O(N) in the number of candidate points for a bounded horizon.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "discretization/Discretization.hpp"
@@ -29,6 +30,20 @@ struct NeighborSearchInput {
 // particular order.
 void findNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
                    std::vector<long long>& offsets, std::vector<std::size_t>& neighbors);
+
+// The same bonds as findNeighbors, found the other way round: the candidates are visited in
+// index order and each scans the queries within reach of it (cells of half the reach, rows of
+// cells contiguous in memory), so every query's neighbours come out in increasing candidate
+// index -- number the candidates in the order the lists must have and no list needs sorting.
+// Two passes: countNeighbors gives each query's number of neighbours (counts[i] for
+// queries[i]); fillNeighbors then writes the neighbours of queries[i] to
+// out[begin[i] .. begin[i] + counts[i]) and throws std::logic_error if a count differs.
+// Bond filter cuts are counted by whichever pass is given in.bondFilterCuts.
+void countNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
+                    std::vector<int>& counts);
+void fillNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
+                   const std::vector<std::int64_t>& begin, const std::vector<int>& counts,
+                   int* out);
 
 // The reach of a query point: the largest |xi| any neighbour of it can have.
 double searchReach(const NeighborhoodRule& rule, double horizon);

@@ -141,6 +141,26 @@ PointBatch migrate(const PointBatch& points, const std::vector<int>& destination
   return received;
 }
 
+std::vector<int> migrateValues(const std::vector<int>& values, const std::vector<int>& destination,
+                               MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  std::vector<int> sendCounts(size, 0), recvCounts(size), sendDispls(size, 0), recvDispls(size, 0);
+  for (int r : destination) ++sendCounts[r];
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < size; ++r) {
+    sendDispls[r] = sendDispls[r - 1] + sendCounts[r - 1];
+    recvDispls[r] = recvDispls[r - 1] + recvCounts[r - 1];
+  }
+  // By destination, in the order of the points (migrate's stable sort by rank).
+  std::vector<int> send(values.size()), next(sendDispls);
+  for (std::size_t p = 0; p < values.size(); ++p) send[next[destination[p]]++] = values[p];
+  std::vector<int> received(static_cast<std::size_t>(recvDispls[size - 1] + recvCounts[size - 1]));
+  MPI_Alltoallv(send.data(), sendCounts.data(), sendDispls.data(), MPI_INT, received.data(),
+                recvCounts.data(), recvDispls.data(), MPI_INT, comm);
+  return received;
+}
+
 HaloBatch exchangeHalo(const PointBatch& owned, double reach, const std::vector<int>& codes,
                        const double* boxLength, MPI_Comm comm) {
   int rank = 0, size = 1;

@@ -31,6 +31,11 @@ struct PointBatch {
 // in order of source rank, then of their order on the source.
 PointBatch migrate(const PointBatch& points, const std::vector<int>& destination, MPI_Comm comm);
 
+// Collective: sends values[p] to rank destination[p], in migrate's order, so that the values
+// received line up with the points migrate(points, destination) returns.
+std::vector<int> migrateValues(const std::vector<int>& values, const std::vector<int>& destination,
+                               MPI_Comm comm);
+
 // Periodic shift codes: c in 0..26 stands for the shift (c % 3 - 1, c / 3 % 3 - 1, c / 9 - 1)
 // box lengths; 13 is no shift.
 constexpr int kNoShift = 13;

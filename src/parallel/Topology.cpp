@@ -52,58 +52,95 @@ GlobalFacts globalFacts(const PointBatch& points, const TopologyOptions& opt, MP
   return g;
 }
 
-// The owned points of this rank and the candidates of their search: the owned points
-// themselves, then the halo (points of other ranks, and periodic images, within reach).
-struct Neighbourhoods {
+// The owned points of this rank and the candidates of their search (the owned points and the
+// halo: points of other ranks, and periodic images, within reach), the candidates numbered in
+// identity order -- global id, then periodic shift code -- which is the order every bond list
+// must have: the search then writes each list in order (fillNeighbors), with no sort.
+struct Candidates {
   PointBatch owned;
   HaloBatch halo;
-  std::vector<long long> offsets;      // per owned point
-  std::vector<std::size_t> neighbors;  // candidate indices: owned p is p, halo h is numOwned + h
+  std::vector<std::size_t> source;   // per candidate: owned p is p, halo h is numOwned + h
+  std::vector<std::size_t> queries;  // per owned point p: its candidate index
+  std::vector<double> x, horizon, edge;
+  std::vector<int> blockId;
+
+  long long globalId(std::size_t c) const {
+    const std::size_t s = source[c], numOwned = owned.size();
+    return s < numOwned ? owned.globalId[s] : halo.points.globalId[s - numOwned];
+  }
+  int code(std::size_t c) const {
+    const std::size_t s = source[c], numOwned = owned.size();
+    return s < numOwned ? kNoShift : halo.shift[s - numOwned];
+  }
+  bool isOwned(std::size_t c) const { return source[c] < owned.size(); }
 };
 
-Neighbourhoods search(PointBatch owned, const GlobalFacts& g, const TopologyOptions& opt,
-                      const std::vector<int>& codes, int dimension, double thickness,
-                      MPI_Comm comm) {
-  Neighbourhoods out;
+Candidates gatherCandidates(PointBatch owned, const GlobalFacts& g, const TopologyOptions& opt,
+                            const std::vector<int>& codes, int dimension, double thickness,
+                            MPI_Comm comm) {
+  Candidates out;
   out.owned = std::move(owned);
   out.halo = exchangeHalo(out.owned, g.reach, codes, g.boxLength, comm);
   const std::size_t numOwned = out.owned.size(), numHalo = out.halo.points.size();
   const std::size_t n = numOwned + numHalo;
-  std::vector<double> cx(3 * n), ch(n);
-  std::vector<int> cb(n);
-  const bool overlap = opt.rule.kind == NeighborhoodRule::Kind::CellOverlap;
-  std::vector<double> ce(overlap ? n : 0);
-  auto fill = [&](std::size_t k, const PointBatch& from, std::size_t p, int code) {
-    double shift[3];
-    shiftVector(code, g.boxLength, shift);
-    for (int d = 0; d < 3; ++d) cx[3 * k + d] = from.x[3 * p + d] + shift[d];
-    ch[k] = from.horizon[p];
-    cb[k] = from.blockId[p];
-    if (overlap) ce[k] = cellEdge(from.volume[p], dimension, thickness);
+  // Identity order. The owned points usually arrive sorted (one rank: the reader's order), so
+  // the sort is skipped when it has nothing to do.
+  struct Identity {
+    long long id;
+    int code;
+    std::size_t source;
+    bool operator<(const Identity& o) const { return id != o.id ? id < o.id : code < o.code; }
   };
-  for (std::size_t p = 0; p < numOwned; ++p) {
-    for (int d = 0; d < 3; ++d) cx[3 * p + d] = out.owned.x[3 * p + d];
-    ch[p] = out.owned.horizon[p];
-    cb[p] = out.owned.blockId[p];
-    if (overlap) ce[p] = cellEdge(out.owned.volume[p], dimension, thickness);
-  }
+  std::vector<Identity> identity(n);
+  for (std::size_t p = 0; p < numOwned; ++p) identity[p] = {out.owned.globalId[p], kNoShift, p};
   for (std::size_t h = 0; h < numHalo; ++h)
-    fill(numOwned + h, out.halo.points, h, out.halo.shift[h]);
-  std::vector<std::size_t> queries(numOwned);
-  std::iota(queries.begin(), queries.end(), std::size_t{0});
+    identity[numOwned + h] = {out.halo.points.globalId[h], out.halo.shift[h], numOwned + h};
+  if (!std::is_sorted(identity.begin(), identity.end()))
+    std::stable_sort(identity.begin(), identity.end());
+  out.source.resize(n);
+  out.queries.resize(numOwned);
+  for (std::size_t c = 0; c < n; ++c) {
+    out.source[c] = identity[c].source;
+    if (identity[c].source < numOwned) out.queries[identity[c].source] = c;
+  }
+  identity = std::vector<Identity>();
+  out.x.resize(3 * n);
+  out.horizon.resize(n);
+  out.blockId.resize(n);
+  const bool overlap = opt.rule.kind == NeighborhoodRule::Kind::CellOverlap;
+  out.edge.resize(overlap ? n : 0);
+  for (std::size_t c = 0; c < n; ++c) {
+    const std::size_t s = out.source[c];
+    const bool isOwned = s < numOwned;
+    const PointBatch& from = isOwned ? out.owned : out.halo.points;
+    const std::size_t p = isOwned ? s : s - numOwned;
+    if (isOwned) {
+      for (int d = 0; d < 3; ++d) out.x[3 * c + d] = from.x[3 * p + d];
+    } else {
+      double shift[3];
+      shiftVector(out.halo.shift[p], g.boxLength, shift);
+      for (int d = 0; d < 3; ++d) out.x[3 * c + d] = from.x[3 * p + d] + shift[d];
+    }
+    out.horizon[c] = from.horizon[p];
+    out.blockId[c] = from.blockId[p];
+    if (overlap) out.edge[c] = cellEdge(from.volume[p], dimension, thickness);
+  }
+  return out;
+}
+
+NeighborSearchInput searchInput(const Candidates& c, const GlobalFacts& g,
+                                const TopologyOptions& opt) {
   NeighborSearchInput in;
-  in.x = cx.data();
-  in.numPoints = n;
-  in.horizon = ch.data();
-  in.blockId = cb.data();
+  in.x = c.x.data();
+  in.numPoints = c.horizon.size();
+  in.horizon = c.horizon.data();
+  in.blockId = c.blockId.data();
   in.omitBondsBetweenBlocks = opt.omitBondsBetweenBlocks;
   in.rule = opt.rule;
   in.bondFilters = opt.bondFilters;
-  in.bondFilterCuts = opt.bondFilterCuts;
   in.unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox && g.differentHorizons;
-  in.cellEdge = overlap ? ce.data() : nullptr;
-  findNeighbors(in, queries, out.offsets, out.neighbors);
-  return out;
+  in.cellEdge = c.edge.empty() ? nullptr : c.edge.data();
+  return in;
 }
 
 PointBatch batchOf(const PointCloud& cloud, const std::vector<double>& horizon) {
@@ -173,71 +210,89 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   // Partition, move the points to their owners, search among them and their halo.
   std::vector<int> owner = partitionShare(points.x, {}, comm);
   points = migrate(points, owner, comm);
-  Neighbourhoods lists =
-      search(std::move(points), facts, opt, codes, cloud.dimension, cloud.thickness, comm);
+  std::vector<int> bondCount;  // per owned point (in the order of `points`)
   if (t.numRanks > 1 && opt.weightByBondCount) {
-    // Rebalance with each point weighted by its work (1 + its bonds), then search again.
-    std::vector<double> weight(lists.owned.size());
+    // Rebalance with each point weighted by its work (1 + its bonds). A point's bond count does
+    // not depend on the partition, so the counts travel with the points and the lists are
+    // searched once, on the final partition.
+    {
+      Candidates first = gatherCandidates(std::move(points), facts, opt, codes, cloud.dimension,
+                                          cloud.thickness, comm);
+      countNeighbors(searchInput(first, facts, opt), first.queries, bondCount);
+      points = std::move(first.owned);
+    }
+    std::vector<double> weight(points.size());
     for (std::size_t p = 0; p < weight.size(); ++p)
-      weight[p] = 1.0 + static_cast<double>(lists.offsets[p + 1] - lists.offsets[p]);
-    points = std::move(lists.owned);
-    lists = Neighbourhoods();  // free the first lists before the second search
+      weight[p] = 1.0 + static_cast<double>(bondCount[p]);
     owner = partitionShare(points.x, weight, comm);
+    bondCount = migrateValues(bondCount, owner, comm);
     points = migrate(points, owner, comm);
-    lists = search(std::move(points), facts, opt, codes, cloud.dimension, cloud.thickness, comm);
   }
-  const PointBatch& owned = lists.owned;
-  const PointBatch& halo = lists.halo.points;
-  const std::vector<int>& haloShift = lists.halo.shift;
+  Candidates cand = gatherCandidates(std::move(points), facts, opt, codes, cloud.dimension,
+                                     cloud.thickness, comm);
+  NeighborSearchInput searchIn = searchInput(cand, facts, opt);
+  if (bondCount.empty()) countNeighbors(searchIn, cand.queries, bondCount);
+  const PointBatch& owned = cand.owned;
+  const PointBatch& halo = cand.halo.points;
   const std::size_t numOwned = owned.size();
+  const std::size_t numCandidates = cand.source.size();
   t.numOwned = static_cast<int>(numOwned);
 
-  // A candidate's identity: (global id, shift code).
-  auto gidOf = [&](std::size_t c) {
-    return c < numOwned ? owned.globalId[c] : halo.globalId[c - numOwned];
-  };
-  auto codeOf = [&](std::size_t c) { return c < numOwned ? kNoShift : haloShift[c - numOwned]; };
-  auto byIdThenShift = [&](std::size_t a, std::size_t b) {
-    const long long ga = gidOf(a), gb = gidOf(b);
-    return ga != gb ? ga < gb : codeOf(a) < codeOf(b);
-  };
-
   // Space-filling-curve order of the owned points (ties broken by global id).
-  std::vector<unsigned long long> key(numOwned);
-  for (std::size_t p = 0; p < numOwned; ++p)
-    key[p] = mortonKey(&owned.x[3 * p], facts.lo, facts.hi);
-  std::vector<std::size_t> order(numOwned);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return key[a] != key[b] ? key[a] < key[b] : owned.globalId[a] < owned.globalId[b];
-  });
-  key = std::vector<unsigned long long>();
+  std::vector<std::size_t> order(numOwned);  // owned local index k -> owned point p
+  {
+    struct Key {
+      unsigned long long morton;
+      long long id;
+      std::size_t p;
+    };
+    std::vector<Key> keys(numOwned);
+    for (std::size_t p = 0; p < numOwned; ++p)
+      keys[p] = {mortonKey(&owned.x[3 * p], facts.lo, facts.hi), owned.globalId[p], p};
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+      return a.morton != b.morton ? a.morton < b.morton : a.id < b.id;
+    });
+    for (std::size_t k = 0; k < numOwned; ++k) order[k] = keys[k].p;
+  }
+
+  // Bond lists in SFC order of their owners, each sorted by (global id, shift): a fixed
+  // summation order whatever the rank count. The search writes candidate indices, which are
+  // in that order; they become local indices below.
+  t.bondOffsets.assign(numOwned + 1, 0);
+  std::vector<std::int64_t> listBegin(numOwned);
+  for (std::size_t k = 0; k < numOwned; ++k) {
+    listBegin[order[k]] = t.bondOffsets[k];
+    t.bondOffsets[k + 1] = t.bondOffsets[k] + bondCount[order[k]];
+  }
+  t.neighbors.resize(static_cast<std::size_t>(t.bondOffsets[numOwned]));
+  searchIn.bondFilterCuts = opt.bondFilterCuts;
+  fillNeighbors(searchIn, cand.queries, listBegin, bondCount, t.neighbors.data());
+  listBegin = std::vector<std::int64_t>();
+  bondCount = std::vector<int>();
 
   // Ghosts: the real points behind neighbours owned elsewhere (also of periodic images),
   // sorted by global id; one halo record of each stands for it. Images come last, sorted by
-  // (global id, shift).
-  std::unordered_map<long long, int> localOfId;  // owned and ghost points
-  localOfId.reserve(2 * numOwned);
-  for (std::size_t k = 0; k < numOwned; ++k)
-    localOfId[owned.globalId[order[k]]] = static_cast<int>(k);
+  // (global id, shift). Candidates of one global id are adjacent in identity order.
+  std::vector<char> used(numCandidates, 0);
+  for (int c : t.neighbors) used[static_cast<std::size_t>(c)] = 1;
   std::vector<std::size_t> ghosts, images;  // candidate indices
-  {
-    std::unordered_map<long long, std::size_t> ghostRecord;
-    for (std::size_t c : lists.neighbors) {
-      if (c < numOwned) continue;
-      const long long gid = gidOf(c);
-      if (!localOfId.count(gid)) ghostRecord.emplace(gid, c);
-      if (codeOf(c) != kNoShift) images.push_back(c);
+  auto sameImage = [&](std::size_t c, std::size_t e) {
+    return cand.globalId(c) == cand.globalId(e) && cand.code(c) == cand.code(e);
+  };
+  for (std::size_t a = 0, b = 0; a < numCandidates; a = b) {
+    const long long id = cand.globalId(a);
+    bool ownedHere = false, usedHere = false;
+    std::size_t record = numCandidates;
+    for (b = a; b < numCandidates && cand.globalId(b) == id; ++b) {
+      ownedHere = ownedHere || cand.isOwned(b);
+      usedHere = usedHere || used[b];
+      if (!cand.isOwned(b) && record == numCandidates) record = b;
+      if (used[b] && cand.code(b) != kNoShift && !(!images.empty() && sameImage(images.back(), b)))
+        images.push_back(b);
     }
-    for (const auto& kv : ghostRecord) ghosts.push_back(kv.second);
+    if (!ownedHere && usedHere) ghosts.push_back(record);
   }
-  std::sort(ghosts.begin(), ghosts.end(), byIdThenShift);
-  std::sort(images.begin(), images.end(), byIdThenShift);
-  images.erase(std::unique(images.begin(), images.end(),
-                           [&](std::size_t a, std::size_t b) {
-                             return gidOf(a) == gidOf(b) && codeOf(a) == codeOf(b);
-                           }),
-               images.end());
+  used = std::vector<char>();
   t.numGhosts = static_cast<int>(ghosts.size());
   t.numOverlap = t.numOwned + t.numGhosts + static_cast<int>(images.size());
   const std::size_t numOverlap = static_cast<std::size_t>(t.numOverlap);
@@ -249,56 +304,52 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   // Overlap point k from candidate c: the unshifted point for owned and ghosts, x + shift for
   // images (the same arithmetic the search used).
   auto setPoint = [&](std::size_t k, std::size_t c, bool applyShift) {
-    const PointBatch& from = c < numOwned ? owned : halo;
-    const std::size_t p = c < numOwned ? c : c - numOwned;
+    const std::size_t s = cand.source[c];
+    const PointBatch& from = s < numOwned ? owned : halo;
+    const std::size_t p = s < numOwned ? s : s - numOwned;
     double shift[3] = {0, 0, 0};
-    if (applyShift) shiftVector(codeOf(c), facts.boxLength, shift);
+    if (applyShift) shiftVector(cand.code(c), facts.boxLength, shift);
     for (int d = 0; d < 3; ++d) t.referencePosition[3 * k + d] = from.x[3 * p + d] + shift[d];
     t.overlapGlobalId[k] = from.globalId[p];
     t.volume[k] = from.volume[p];
     t.horizon[k] = from.horizon[p];
     t.blockId[k] = from.blockId[p];
   };
-  for (std::size_t k = 0; k < numOwned; ++k) setPoint(k, order[k], false);
-  for (std::size_t k = 0; k < ghosts.size(); ++k) {
-    setPoint(numOwned + k, ghosts[k], false);
-    localOfId[gidOf(ghosts[k])] = static_cast<int>(numOwned + k);
-  }
-  std::unordered_map<unsigned long long, int> localOfImage;  // gid * 27 + code
-  for (std::size_t m = 0; m < images.size(); ++m) {
-    const std::size_t k = numOwned + ghosts.size() + m;
-    setPoint(k, images[m], true);
-    const long long gid = gidOf(images[m]);
-    localOfImage[static_cast<unsigned long long>(gid) * 27ull + codeOf(images[m])] =
-        static_cast<int>(k);
-    t.imageSource.push_back(localOfId.at(gid));
-    double shift[3];
-    shiftVector(codeOf(images[m]), facts.boxLength, shift);
-    t.imageShift.insert(t.imageShift.end(), shift, shift + 3);
-  }
-
-  // Bond lists in SFC order of their owners, each sorted by (global id, shift): a fixed
-  // summation order whatever the rank count.
-  t.bondOffsets.assign(numOwned + 1, 0);
-  for (std::size_t k = 0; k < numOwned; ++k)
-    t.bondOffsets[k + 1] =
-        t.bondOffsets[k] + (lists.offsets[order[k] + 1] - lists.offsets[order[k]]);
-  t.neighbors.resize(lists.neighbors.size());
+  // The local index of every candidate a list may hold: its point's (owned or ghost) when
+  // unshifted, its image's when shifted.
+  std::vector<int> localOf(numCandidates, -1);
+  std::vector<int> localOfOwned(numOwned);
   for (std::size_t k = 0; k < numOwned; ++k) {
-    const std::size_t p = order[k];
-    auto first = lists.neighbors.begin() + lists.offsets[p],
-         last = lists.neighbors.begin() + lists.offsets[p + 1];
-    std::sort(first, last, byIdThenShift);
-    std::int64_t b = t.bondOffsets[k];
-    for (auto it = first; it != last; ++it, ++b) {
-      const std::size_t c = *it;
-      const long long gid = gidOf(c);
-      t.neighbors[b] =
-          codeOf(c) == kNoShift
-              ? localOfId.at(gid)
-              : localOfImage.at(static_cast<unsigned long long>(gid) * 27ull + codeOf(c));
+    setPoint(k, cand.queries[order[k]], false);
+    localOfOwned[order[k]] = static_cast<int>(k);
+  }
+  for (std::size_t k = 0; k < ghosts.size(); ++k) setPoint(numOwned + k, ghosts[k], false);
+  for (std::size_t a = 0, b = 0, g = 0, m = 0; a < numCandidates; a = b) {
+    const long long id = cand.globalId(a);
+    int real = -1;  // the local index of the point itself, if it is owned or a ghost
+    for (b = a; b < numCandidates && cand.globalId(b) == id; ++b)
+      if (cand.isOwned(b)) real = localOfOwned[cand.source[b]];
+    if (real < 0 && g < ghosts.size() && cand.globalId(ghosts[g]) == id)
+      real = static_cast<int>(numOwned + g++);
+    for (std::size_t c = a; c < b; ++c) {
+      if (cand.code(c) == kNoShift) {
+        localOf[c] = real;
+      } else if (m < images.size() && images[m] == c) {
+        const int k = static_cast<int>(numOwned + ghosts.size() + m++);
+        setPoint(static_cast<std::size_t>(k), c, true);
+        t.imageSource.push_back(real);
+        double shift[3];
+        shiftVector(cand.code(c), facts.boxLength, shift);
+        t.imageShift.insert(t.imageShift.end(), shift, shift + 3);
+        localOf[c] = k;
+      } else if (m > 0 && sameImage(images[m - 1], c)) {
+        localOf[c] = static_cast<int>(numOwned + ghosts.size() + m - 1);  // the same image again
+      }
     }
   }
+  localOfOwned = std::vector<int>();
+  for (int& c : t.neighbors) c = localOf[static_cast<std::size_t>(c)];
+  localOf = std::vector<int>();
 
   // Point sets as owned local indices.
   for (const auto& set : cloud.pointSets) t.pointSetNames.push_back(set.name);
@@ -308,7 +359,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
     for (int s = owned.setOffsets[p]; s < owned.setOffsets[p + 1]; ++s)
       t.ownedPointSets[owned.setIndex[s]].push_back(static_cast<int>(k));
   }
-  lists = Neighbourhoods();
+  cand = Candidates();
 
   // One-sided bonds (differing horizons, sphere rules): which end's horizon holds each bond,
   // with the search's own arithmetic so that both ends agree.

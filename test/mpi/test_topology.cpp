@@ -271,3 +271,70 @@ TEST(Topology, PeriodicImagesMatchMinimumImageBruteForce) {
 
 }  // namespace
 }  // namespace peridot
+
+#include "neighbor/NeighborSearch.hpp"
+
+namespace peridot {
+namespace {
+
+// A lattice whose spacing is no binary fraction, with neighbours at exactly 3 spacings in real
+// arithmetic (the rounding decides them), global ids in a scrambled order (so the order of the
+// lists is not the order of space): every rank's lists must be the per-query search of the
+// whole cloud, sorted by global id, with the weighted re-partition (bond counts carried to the
+// new owners) and without it.
+TEST(Topology, KnifeEdgeLatticeListsMatchPerQuerySearchInOrder) {
+  const int n = 14;
+  const double h = 0.1, origin = 0.37;
+  PointCloud cloud;
+  std::vector<long long> ids(static_cast<std::size_t>(n) * n * n);
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<long long>(i);
+  std::shuffle(ids.begin(), ids.end(), std::mt19937(5));
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        cloud.x.insert(cloud.x.end(), {origin + i * h, origin + j * h, origin + k * h});
+        cloud.volume.push_back(h * h * h);
+        cloud.blockId.push_back(1);
+        cloud.globalId.push_back(ids[cloud.globalId.size()]);
+      }
+  cloud.blockNames = {{1, "block_1"}};
+  std::vector<double> horizon(cloud.size(), 3 * h);
+
+  // The per-query search over the whole cloud, lists as sorted global ids.
+  NeighborSearchInput in;
+  in.x = cloud.x.data();
+  in.numPoints = cloud.size();
+  in.horizon = horizon.data();
+  std::vector<std::size_t> queries(cloud.size());
+  for (std::size_t q = 0; q < queries.size(); ++q) queries[q] = q;
+  std::vector<long long> offsets;
+  std::vector<std::size_t> found;
+  findNeighbors(in, queries, offsets, found);
+  std::map<long long, std::vector<long long>> expected;
+  long long expectedBonds = 0;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    auto& list = expected[cloud.globalId[q]];
+    for (long long b = offsets[q]; b < offsets[q + 1]; ++b)
+      list.push_back(cloud.globalId[found[b]]);
+    std::sort(list.begin(), list.end());
+    expectedBonds += static_cast<long long>(list.size());
+  }
+  ASSERT_GT(expectedBonds, 0);
+
+  for (bool weighted : {true, false}) {
+    SCOPED_TRACE(weighted ? "weighted re-partition" : "one partition");
+    TopologyOptions options;
+    options.weightByBondCount = weighted;
+    Topology t = testing::topologyOfWhole(cloud, horizon, options, MPI_COMM_WORLD);
+    EXPECT_EQ(t.globalNumBonds, expectedBonds);
+    for (int i = 0; i < t.numOwned; ++i) {
+      std::vector<long long> got;
+      for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+        got.push_back(t.overlapGlobalId[t.neighbors[b]]);
+      EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace peridot
