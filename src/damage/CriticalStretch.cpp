@@ -29,7 +29,7 @@ void breakLoop(const ModelState& s, const std::vector<int>& points, double sc, d
         zeta = zetaStored[b];
       } else {
         const double X0 = x[3 * j] - xi0, X1 = x[3 * j + 1] - xi1, X2 = x[3 * j + 2] - xi2;
-        zeta = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
+        zeta = std::sqrt(sumOfSquares(X0, X1, X2));
       }
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       double length = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);

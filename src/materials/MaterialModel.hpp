@@ -67,13 +67,23 @@ struct ModelState {
   const std::vector<BondFilter>* bondFilters = nullptr;
 };
 
+// X0^2 + X1^2 + X2^2 in one fixed rounding. With FMA hardware the compiler may contract a sum of
+// products into fused multiply-adds in any order it likes, and its choice can differ between a
+// scalar and a vector loop: here the order is written out, so every caller gets the same bits.
+inline double sumOfSquares(double X0, double X1, double X2) {
+#ifdef __FMA__
+  return std::fma(X2, X2, std::fma(X1, X1, X0 * X0));
+#else
+  return X0 * X0 + X1 * X1 + X2 * X2;  // no FMA instructions: nothing to contract
+#endif
+}
+
 // |xi| of the bond from i to j, from the reference coordinates. The evaluator fills the stored
-// `Reference_Bond_Length` with this very function, so a loop that calls it instead of reading the
-// array gets the same bits.
+// `Reference_Bond_Length` with this very function, and the loops that compute |xi| instead of
+// reading the array use sumOfSquares() alike: the same bits either way.
 inline double referenceBondLength(const double* x, int i, int j) {
-  const double X0 = x[3 * j] - x[3 * i], X1 = x[3 * j + 1] - x[3 * i + 1],
-               X2 = x[3 * j + 2] - x[3 * i + 2];
-  return std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
+  return std::sqrt(
+      sumOfSquares(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]));
 }
 
 // |xi| of bond entry b of owned point i, stored or computed (for loops off the hot path).
