@@ -70,9 +70,11 @@ struct ModelState {
 // X0^2 + X1^2 + X2^2 in one fixed rounding. With FMA hardware the compiler may contract a sum of
 // products into fused multiply-adds in any order it likes, and its choice can differ between a
 // scalar and a vector loop: here the order is written out, so every caller gets the same bits.
+// It is the order GCC gives `X0 * X0 + X1 * X1 + X2 * X2` in scalar code, so the stored lengths
+// keep the values of earlier builds.
 inline double sumOfSquares(double X0, double X1, double X2) {
 #ifdef __FMA__
-  return std::fma(X2, X2, std::fma(X1, X1, X0 * X0));
+  return std::fma(X2, X2, std::fma(X0, X0, X1 * X1));
 #else
   return X0 * X0 + X1 * X1 + X2 * X2;  // no FMA instructions: nothing to contract
 #endif

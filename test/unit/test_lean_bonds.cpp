@@ -163,10 +163,14 @@ TEST(LeanBonds, ComputedBondLengthEqualsStoredBondLength) {
   for (int i = 0; i < t.numOwned; ++i)
     for (std::int64_t b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
       const int j = t.neighbors[b];
-      double z2 = 0;
-      for (int d = 0; d < 3; ++d)
-        z2 += (x[3 * j + d] - x[3 * i + d]) * (x[3 * j + d] - x[3 * i + d]);
-      zeta[b] = std::sqrt(z2);
+      // The sum in the order sumOfSquares fixes, written out here.
+      const double X0 = x[3 * j] - x[3 * i], X1 = x[3 * j + 1] - x[3 * i + 1],
+                   X2 = x[3 * j + 2] - x[3 * i + 2];
+#ifdef __FMA__
+      zeta[b] = std::sqrt(std::fma(X2, X2, std::fma(X0, X0, X1 * X1)));
+#else
+      zeta[b] = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);  // nothing to contract
+#endif
     }
   ModelState s = lean.evaluator->state();
   ASSERT_EQ(s.bondLength, nullptr);
