@@ -266,6 +266,9 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   if (planar_) evaluator_->setPlanar(thickness_);
   evaluator_->setPartialVolumes(config_.discretization.partialVolumes);
   evaluator_->setBondFilters(&config_.discretization.bondFilters);
+  // Compact bond damage where nothing needs the float array: checkpoints save it, the implicit
+  // solver's tangent reads it.
+  evaluator_->setCompactDamageAllowed(!config_.restart.enabled && !config_.solver.quasiStatic);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();

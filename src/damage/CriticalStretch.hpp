@@ -19,6 +19,7 @@ class CriticalStretch : public DamageModel {
   explicit CriticalStretch(ListReader& params);
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
+  bool needsBondLength() const override { return false; }  // breakStretchedBonds computes it
   double criticalStretch() const { return criticalStretch_.value(); }
   // The fused force-loop check has no thermal term: only without one.
   double fusableCriticalStretch() const override {

@@ -31,6 +31,11 @@ class DamageModel {
   // exceeds it": a material that fuses that check into its force loop may then replace
   // computeDamage (MaterialModel::fusesCriticalStretch).
   virtual double fusableCriticalStretch() const { return 0.0; }
+  // Whether computeDamage reads ModelState::bondLength (stored only if some model asks for it;
+  // a model that returns false computes |xi| with referenceBondLength()).
+  virtual bool needsBondLength() const { return true; }
+  // Whether initializeDamage may break bonds (then the run keeps float bond damage).
+  virtual bool initializesDamage() const { return false; }
   // A run continued from a checkpoint: the model's history fields are restored and the next
   // evaluation closes a step (it is not the initial state).
   virtual void resume() {}

@@ -16,6 +16,8 @@ class InitialDamage : public DamageModel {
   void initializeDamage(const ModelState& state, const std::vector<int>& points,
                         float* bondDamage) override;
   void computeDamage(const ModelState&, const std::vector<int>&, float*) override {}
+  bool needsBondLength() const override { return false; }
+  bool initializesDamage() const override { return true; }
 
  private:
   std::vector<BondFilter> filters_;

@@ -14,6 +14,7 @@ class TimeDependentCriticalStretch : public DamageModel {
   explicit TimeDependentCriticalStretch(ListReader& params);
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
+  bool needsBondLength() const override { return false; }  // breakStretchedBonds computes it
   double criticalStretchAt(double t) const { return criticalStretch_->evaluate(&t); }
 
  private:

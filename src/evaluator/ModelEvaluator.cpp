@@ -30,18 +30,35 @@ void ModelEvaluator::initialize() {
   state_.forceDensity = fields_.node("Force_Density", 3);
   state_.bondSides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
 
-  // Reference bond lengths, once: the kernels read them instead of the neighbours' reference
-  // coordinates (same formula, so the same bits).
+  // Compact damage (1-byte broken flags instead of a float per bond): only if the caller allows
+  // it (no checkpoint or implicit solver reads the float array), every damage model is a
+  // critical stretch fused into its material's force loop, and every material reads the flags.
   {
+    bool anyDamageModel = false, compact = compactDamageAllowed_;
+    for (const auto& b : blocks_) {
+      compact = compact && b.material->acceptsBrokenBondFlags();
+      if (b.damage) {
+        anyDamageModel = true;
+        compact = compact && b.damage->fusableCriticalStretch() > 0 &&
+                  b.material->fusesCriticalStretch() && !b.damage->initializesDamage();
+      }
+    }
+    compactDamage_ = compact && anyDamageModel;
+  }
+
+  // Reference bond lengths, once, if some block reads them (MaterialModel::needsBondLength, or a
+  // damage pass that is not fused into the force loop): the kernels read them instead of the
+  // neighbours' reference coordinates. Others compute |xi| with referenceBondLength() (same
+  // bits) and save 8 bytes a bond.
+  bool needLength = false;
+  for (const auto& b : blocks_)
+    needLength = needLength || b.material->needsBondLength() ||
+                 (b.damage && b.damage->needsBondLength() && !fusesCriticalStretch(b));
+  if (needLength) {
     std::vector<double>& length = fields_.bond("Reference_Bond_Length");
     for (int i = 0; i < topology_.numOwned; ++i)
-      for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b) {
-        const int j = topology_.neighbors[b];
-        const double X0 = state_.x[3 * j] - state_.x[3 * i],
-                     X1 = state_.x[3 * j + 1] - state_.x[3 * i + 1],
-                     X2 = state_.x[3 * j + 2] - state_.x[3 * i + 2];
-        length[b] = std::sqrt(X0 * X0 + X1 * X1 + X2 * X2);
-      }
+      for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
+        length[b] = referenceBondLength(state_.x, i, topology_.neighbors[b]);
     state_.bondLength = length.data();
   }
 
@@ -134,10 +151,15 @@ void ModelEvaluator::initialize() {
   for (const auto& b : blocks_) anyDamage = anyDamage || b.damage != nullptr;
   if (anyDamage) {
     hasDamage_ = true;
-    bondDamage_ = fields_.bondFloat("Bond_Damage").data();
-    state_.bondDamage = bondDamage_;
-    for (auto& b : blocks_)
-      if (b.damage) b.damage->initializeDamage(state_, b.points, bondDamage_);
+    if (compactDamage_) {
+      bondBroken_ = fields_.bondByte("Bond_Broken").data();
+      state_.bondBroken = bondBroken_;
+    } else {
+      bondDamage_ = fields_.bondFloat("Bond_Damage").data();
+      state_.bondDamage = bondDamage_;
+      for (auto& b : blocks_)
+        if (b.damage) b.damage->initializeDamage(state_, b.points, bondDamage_);
+    }
   }
 
   // Bonds may only join points whose models can read each other's per-point state.
@@ -236,18 +258,21 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
     const bool fused = updateDamage && fusesCriticalStretch(b);
     state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
+    state_.breakableBondBroken = fused ? bondBroken_ : nullptr;
     state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
     b.material->computeForce(state_, b.points);
   }
   state_.breakableBondDamage = nullptr;
+  state_.breakableBondBroken = nullptr;
   state_.fusedCriticalStretch = 0.0;
 }
 
 bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {
   // Only when nothing between the damage and force phases reads this block's bond damage: the
   // bond-based models have no precompute, and each point's bonds are its own entries.
-  return (fuseCriticalStretch_ || b.material->requiresFusedCriticalStretch()) && b.damage &&
-         b.damage->fusableCriticalStretch() > 0 && b.material->fusesCriticalStretch();
+  // Compact damage has no float array for a separate pass: always fused.
+  return (fuseCriticalStretch_ || compactDamage_ || b.material->requiresFusedCriticalStretch()) &&
+         b.damage && b.damage->fusableCriticalStretch() > 0 && b.material->fusesCriticalStretch();
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {
@@ -259,6 +284,7 @@ void ModelEvaluator::nodeDamage(double* damage) const {
       if (!topology_.ownSide(b)) continue;
       count += 1;
       if (bondDamage_) broken += bondDamage_[b];
+      if (bondBroken_) broken += bondBroken_[b];
     }
     damage[i] = count > 0 ? broken / count : 0.0;
   }

@@ -25,6 +25,12 @@ class ModelEvaluator {
   // Whether bond-based blocks with "Critical Stretch" check the stretch inside their force loop
   // (default) or in a separate damage pass; both give the same bits (bench_roofline measures).
   void setFuseCriticalStretch(bool fuse) { fuseCriticalStretch_ = fuse; }
+  // Allows compact bond damage (1-byte broken flags, ModelState::bondBroken) when every damage
+  // model is a fused critical stretch and every material reads the flags. Off by default: the
+  // caller allows it when nothing else needs the float `Bond_Damage` array (checkpoints, the
+  // implicit solver's tangent). Before initialize().
+  void setCompactDamageAllowed(bool allowed) { compactDamageAllowed_ = allowed; }
+  bool compactDamage() const { return compactDamage_; }
   // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
   // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
   void setPartialVolumes(bool partial) {
@@ -65,10 +71,14 @@ class ModelEvaluator {
   ModelState state_;
   bool fusesCriticalStretch(const Block& b) const;
 
-  float* bondDamage_ = nullptr;  // null on a rank without bonds
-  bool hasDamage_ = false;       // some block has a damage model (the same on every rank)
-  bool thermal_ = false;         // some block's material expands (the same on every rank)
+  float* bondDamage_ = nullptr;  // null on a rank without bonds, or with compact damage
+  unsigned char* bondBroken_ =
+      nullptr;              // compact damage: 1 = broken (null on a rank without bonds)
+  bool hasDamage_ = false;  // some block has a damage model (the same on every rank)
+  bool thermal_ = false;    // some block's material expands (the same on every rank)
   bool fuseCriticalStretch_ = true;
+  bool compactDamageAllowed_ = false;
+  bool compactDamage_ = false;
   bool partialVolumes_ = false;
   std::vector<std::string> syncAfterPrecompute_;
 };

@@ -97,6 +97,15 @@ std::vector<float>& FieldManager::bondFloat(const std::string& name, float initi
       .first->second;
 }
 
+std::vector<unsigned char>& FieldManager::bondByte(const std::string& name, unsigned char initial) {
+  auto it = byteBondFields_.find(name);
+  if (it != byteBondFields_.end()) return it->second;
+  return byteBondFields_
+      .emplace(name,
+               std::vector<unsigned char>(static_cast<std::size_t>(topology_.numBonds()), initial))
+      .first->second;
+}
+
 std::vector<std::string> FieldManager::bondFieldNames() const {
   std::vector<std::string> names;
   for (const auto& kv : bondFields_) names.push_back(kv.first);
@@ -115,6 +124,7 @@ std::size_t FieldManager::bytesAllocated() const {
     bytes += sizeof(double) * kv.second.components * topology_.numOverlap;
   for (const auto& kv : bondFields_) bytes += sizeof(double) * kv.second.size();
   for (const auto& kv : floatBondFields_) bytes += sizeof(float) * kv.second.size();
+  for (const auto& kv : byteBondFields_) bytes += kv.second.size();
   return bytes;
 }
 

@@ -45,6 +45,9 @@ class FieldManager {
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
   // Single precision, for bond state that needs no more (bond damage).
   std::vector<float>& bondFloat(const std::string& name, float initial = 0.0f);
+  // One byte, for flags (compact bond damage: 1 = broken). Not saved by checkpoints: a run with
+  // a checkpoint keeps float damage (ModelEvaluator::setCompactDamageAllowed).
+  std::vector<unsigned char>& bondByte(const std::string& name, unsigned char initial = 0);
 
   // Names of the bond fields allocated so far (double, then float), e.g. for a checkpoint.
   std::vector<std::string> bondFieldNames() const;
@@ -58,6 +61,7 @@ class FieldManager {
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, std::vector<float>> floatBondFields_;
+  std::map<std::string, std::vector<unsigned char>> byteBondFields_;
   std::set<std::string> positionFields_, currentPositionFields_;
   bool deformedBox_ = false;
   double boxF_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};

@@ -29,9 +29,9 @@ void pairStiffness(const ModelState& s, const std::vector<int>& points, const do
       for (double& component : n) component /= length;
       double c2 = s.bondSides ? c[i] * (s.bondSides[b] & 1) + c[j] * ((s.bondSides[b] >> 1) & 1)
                               : c[i] + c[j];
-      if (s.bondDamage) c2 *= 1.0 - s.bondDamage[b];
+      if (s.bondDamage || s.bondBroken) c2 *= intactFraction(s, b);
       if (s.influence) c2 *= s.influence[b];
-      const double zeta = s.bondLength[b];
+      const double zeta = bondLengthOf(s, i, b);
       const double k = c2 * s.volume[j] / (kOverLength ? 2.0 * zeta * zeta : 2.0 * zeta);
       const double ratio = zeta / length;
       double D[9];

@@ -13,7 +13,8 @@ struct BondOptions {
 // Calls loop(BondOptions<...>{}) with the options of the model state.
 template <typename Loop>
 void withBondOptions(const ModelState& s, Loop&& loop) {
-  const int key = (s.influence ? 4 : 0) | (s.bondDamage ? 2 : 0) | (s.bondSides ? 1 : 0);
+  const int key =
+      (s.influence ? 4 : 0) | (s.bondDamage || s.bondBroken ? 2 : 0) | (s.bondSides ? 1 : 0);
   switch (key) {
     case 0:
       return loop(BondOptions<false, false, false>{});

@@ -103,7 +103,8 @@ void ElasticBondBased::stiffnessSum(const ModelState& s, const std::vector<int>&
       if (!s.topology->ownSide(b)) continue;
       const int j = s.topology->neighbors[b];
       const double omega = s.influence ? s.influence[b] : 1.0;
-      total += 0.5 * (micromodulus_[i] + micromodulus_[j]) * omega * s.volume[j] / s.bondLength[b];
+      total +=
+          0.5 * (micromodulus_[i] + micromodulus_[j]) * omega * s.volume[j] / bondLengthOf(s, i, b);
     }
     sum[i] = total;
   }

@@ -37,6 +37,9 @@ class ElasticBondBased : public MaterialModel {
   }
   bool acceptsSmoothBondLaw() const override { return true; }
   bool fusesCriticalStretch() const override { return true; }
+  // The pair loops compute |xi| from the reference coordinates and read either damage form.
+  bool needsBondLength() const override { return false; }
+  bool acceptsBrokenBondFlags() const override { return true; }
 
   static constexpr const char* kMicromodulus = "PMB_Micromodulus";
 

@@ -136,7 +136,7 @@ void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& po
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
       if (!s.topology->ownSide(b)) continue;
       const int j = s.topology->neighbors[b];
-      double k = s.volume[j] * c / s.bondLength[b];
+      double k = s.volume[j] * c / bondLengthOf(s, i, b);
       if (s.partialVolumes) {
         double xi[3];
         for (int e = 0; e < 3; ++e) xi[e] = s.x[3 * j + e] - s.x[3 * i + e];

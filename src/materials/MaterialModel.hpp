@@ -1,6 +1,7 @@
 #pragma once
 // Interface of a material model. The evaluator calls it once per block per step with the
 // block's owned points; the bond loops inside run on raw CSR arrays.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,9 +23,18 @@ struct ModelState {
   const double* horizon = nullptr;  // per point
   double* forceDensity = nullptr;   // 3 per point; kernels write owned points only
   // Per bond entry, 0 intact .. 1 broken; float: 4 bytes a bond, exact for broken/intact.
-  const float* bondDamage = nullptr;   // null when no damage model
-  const double* influence = nullptr;   // per bond entry; null means omega = 1
-  const double* bondLength = nullptr;  // per bond entry: |xi|, the reference bond length
+  // Null when no damage model, and also when the run keeps its damage as broken-bond flags
+  // (`bondBroken`; only when every material accepts them, MaterialModel::acceptsBrokenBondFlags).
+  const float* bondDamage = nullptr;
+  const double* influence = nullptr;  // per bond entry; null means omega = 1
+  // Per bond entry: |xi|, the reference bond length. Stored only when some material or damage
+  // pass asks for it (MaterialModel::needsBondLength, the default); otherwise null, and loops
+  // compute it from `x` with referenceBondLength() (the same bits as the stored value).
+  const double* bondLength = nullptr;
+  // Per bond entry, 1 if broken, 0 if intact: the compact damage of a run whose every damage
+  // model is a critical stretch applied in its material's force loop (1 byte a bond instead of
+  // 4). Null otherwise; at most one of bondDamage and bondBroken is set.
+  const unsigned char* bondBroken = nullptr;
   // Per bond entry, where horizons differ: bit 0 set if the bond is within the owner's horizon,
   // bit 1 if within the neighbour's (Topology::bondSides); null when all bonds are two-sided.
   const unsigned char* bondSides = nullptr;
@@ -33,6 +43,7 @@ struct ModelState {
   // check is fused into the material's bond loop (see MaterialModel::fusesCriticalStretch):
   // bonds whose stretch exceeds it break (bond damage 1) before their force is taken.
   float* breakableBondDamage = nullptr;
+  unsigned char* breakableBondBroken = nullptr;  // the same with compact damage (bondBroken)
   double fusedCriticalStretch = 0.0;
   // 2 for a planar run (points in z = 0; volumes already include the thickness), else 3.
   int dimension = 3;
@@ -55,6 +66,39 @@ struct ModelState {
   // neighbours (continuum kinematics); null when none.
   const std::vector<BondFilter>* bondFilters = nullptr;
 };
+
+// X0^2 + X1^2 + X2^2 in one fixed rounding. With FMA hardware the compiler may contract a sum of
+// products into fused multiply-adds in any order it likes, and its choice can differ between a
+// scalar and a vector loop: here the order is written out, so every caller gets the same bits.
+// It is the order GCC gives `X0 * X0 + X1 * X1 + X2 * X2` in scalar code, so the stored lengths
+// keep the values of earlier builds.
+inline double sumOfSquares(double X0, double X1, double X2) {
+#ifdef __FMA__
+  return std::fma(X2, X2, std::fma(X0, X0, X1 * X1));
+#else
+  return X0 * X0 + X1 * X1 + X2 * X2;  // no FMA instructions: nothing to contract
+#endif
+}
+
+// |xi| of the bond from i to j, from the reference coordinates. The evaluator fills the stored
+// `Reference_Bond_Length` with this very function, and the loops that compute |xi| instead of
+// reading the array use sumOfSquares() alike: the same bits either way.
+inline double referenceBondLength(const double* x, int i, int j) {
+  return std::sqrt(
+      sumOfSquares(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1], x[3 * j + 2] - x[3 * i + 2]));
+}
+
+// |xi| of bond entry b of owned point i, stored or computed (for loops off the hot path).
+inline double bondLengthOf(const ModelState& s, int i, std::int64_t b) {
+  return s.bondLength ? s.bondLength[b] : referenceBondLength(s.x, i, s.topology->neighbors[b]);
+}
+
+// 1 - bond damage of bond entry b, from whichever form the run stores (1 without damage).
+inline double intactFraction(const ModelState& s, std::int64_t b) {
+  if (s.bondDamage) return 1.0 - s.bondDamage[b];
+  if (s.bondBroken) return s.bondBroken[b] ? 0.0 : 1.0;
+  return 1.0;
+}
 
 // The point-level 3x3 blocks of the tangent stiffness (solvers/Tangent.hpp).
 struct TangentBlocks;
@@ -122,6 +166,14 @@ class MaterialModel {
   // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
   // the bonds instead of two; the same bits as the separate damage loop).
   virtual bool fusesCriticalStretch() const { return false; }
+  // Whether the model reads ModelState::bondLength. The evaluator stores |xi| per bond (8 bytes
+  // a bond) only if some block's material (or a damage pass that is not fused) asks for it; a
+  // model that returns false computes |xi| with referenceBondLength().
+  virtual bool needsBondLength() const { return true; }
+  // Whether the model reads bond damage from ModelState::bondBroken as well as bondDamage. The
+  // evaluator keeps compact broken-bond flags (1 byte a bond instead of a 4-byte float) only if
+  // every block's material accepts them and every damage model is a fused critical stretch.
+  virtual bool acceptsBrokenBondFlags() const { return false; }
   // Whether the model must apply its block's damage itself (it also breaks state the damage
   // pass does not know of): it then accepts only a fusable damage model (Critical Stretch).
   virtual bool requiresFusedCriticalStretch() const { return false; }

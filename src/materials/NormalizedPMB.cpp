@@ -59,7 +59,7 @@ void NormalizedPMB::stiffnessSum(const ModelState& s, const std::vector<int>& po
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
       const int j = s.topology->neighbors[b];
       const double k = 0.5 * (micromodulus_[i] + micromodulus_[j]) * s.volume[j] /
-                       (s.bondLength[b] * s.bondLength[b]);
+                       (bondLengthOf(s, i, b) * bondLengthOf(s, i, b));
       total += s.influence ? k * s.influence[b] : k;
     }
     sum[i] = total;
