@@ -268,7 +268,13 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   evaluator_->setBondFilters(&config_.discretization.bondFilters);
   // Compact bond damage where nothing needs the float array: checkpoints save it, the implicit
   // solver's tangent reads it.
-  evaluator_->setCompactDamageAllowed(!config_.restart.enabled && !config_.solver.quasiStatic);
+  // `Bond Storage: "Compact"` (opt-in): the lean bond arrays cost ~1.25x in the PMB force loop
+  // (a square root and the neighbours' reference coordinates per bond) for 5 instead of 16 bytes
+  // a bond (bench/RESULTS.md), so a run pays for it only when it asks.
+  const bool compact = config_.discretization.compactBonds;
+  evaluator_->setStoreBondLengths(!compact);
+  evaluator_->setCompactDamageAllowed(compact && !config_.restart.enabled &&
+                                      !config_.solver.quasiStatic);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();

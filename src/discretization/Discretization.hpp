@@ -85,6 +85,9 @@ struct DiscretizationConfig {
   std::string influenceFunction = "One";
   // `Partial Volumes`: neighbours weighted by the part of their cell inside the horizon.
   bool partialVolumes = false;
+  // `Bond Storage: "Compact"` (Peridot extension): models that can compute |xi| in their loop do,
+  // and a fused critical stretch keeps 1-byte broken flags; "Fast" (default) stores both.
+  bool compactBonds = false;
   std::string generatorPath;
   PeriodicBox periodic;  // bonds across periodic faces reach the images of the points
   // Gmsh: node sets grown into the layer of points within layerDepth of their group

@@ -50,7 +50,7 @@ void ModelEvaluator::initialize() {
   // damage pass that is not fused into the force loop): the kernels read them instead of the
   // neighbours' reference coordinates. Others compute |xi| with referenceBondLength() (same
   // bits) and save 8 bytes a bond.
-  bool needLength = false;
+  bool needLength = storeBondLengths_;
   for (const auto& b : blocks_)
     needLength = needLength || b.material->needsBondLength() ||
                  (b.damage && b.damage->needsBondLength() && !fusesCriticalStretch(b));

@@ -30,6 +30,9 @@ class ModelEvaluator {
   // caller allows it when nothing else needs the float `Bond_Damage` array (checkpoints, the
   // implicit solver's tangent). Before initialize().
   void setCompactDamageAllowed(bool allowed) { compactDamageAllowed_ = allowed; }
+  // Stores |xi| per bond for every model (the default: the bond-based loops then read it, which
+  // is faster than computing it); false lets models that do not need it compute it instead.
+  void setStoreBondLengths(bool store) { storeBondLengths_ = store; }
   bool compactDamage() const { return compactDamage_; }
   // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
   // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
@@ -78,6 +81,7 @@ class ModelEvaluator {
   bool thermal_ = false;    // some block's material expands (the same on every rank)
   bool fuseCriticalStretch_ = true;
   bool compactDamageAllowed_ = false;
+  bool storeBondLengths_ = true;
   bool compactDamage_ = false;
   bool partialVolumes_ = false;
   std::vector<std::string> syncAfterPrecompute_;

@@ -36,8 +36,10 @@ struct Lattice {
   Timers timers;
   std::unique_ptr<ModelEvaluator> evaluator;
 
+  // storeLengths: the default `Bond Storage: "Fast"` (|xi| stored for every model); these tests
+  // mostly run the lean forms of "Compact".
   Lattice(int n, std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage,
-          bool allowCompact) {
+          bool allowCompact, bool storeLengths = false) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
     long long id = 0;
@@ -72,6 +74,7 @@ struct Lattice {
     blocks.push_back(b);
     evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
     evaluator->setCompactDamageAllowed(allowCompact);
+    evaluator->setStoreBondLengths(storeLengths);
     evaluator->initialize();
   }
   // y = x + a stretch along x growing with `step` plus a fixed random field.
@@ -182,6 +185,22 @@ TEST(LeanBonds, ComputedBondLengthEqualsStoredBondLength) {
   lean.blocks[0].material->stiffnessSum(lean.evaluator->state(), lean.blocks[0].points, a.data());
   lean.blocks[0].material->stiffnessSum(s, lean.blocks[0].points, b.data());
   EXPECT_TRUE(sameBits(a, b));
+}
+
+// The default storage ("Fast") keeps |xi| for PMB too, and gives the lean run's bits.
+TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
+  Lattice fast(5, pmb(), criticalStretch(0.01), false, true);
+  Lattice lean(5, pmb(), criticalStretch(0.01), false, false);
+  ASSERT_NE(fast.evaluator->state().bondLength, nullptr);
+  EXPECT_EQ(lean.evaluator->state().bondLength, nullptr);
+  for (int step = 1; step <= 4; ++step) {
+    fast.deform(step);
+    lean.deform(step);
+    fast.evaluator->evaluate(1.0);
+    lean.evaluator->evaluate(1.0);
+    EXPECT_EQ(fast.force(), lean.force()) << "step " << step;
+    EXPECT_EQ(fast.nodeDamage(), lean.nodeDamage()) << "step " << step;
+  }
 }
 
 // A model that reads the stored forms (LPS) still gets them: |xi| per bond and float damage.
