@@ -19,6 +19,7 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
+#include "solvers/Implicit.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
@@ -365,6 +366,27 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                    comm_);
   }
 
+  prepareSolver();
+  if (config_.restart.enabled && !config_.chainedSolvers.empty()) {
+    throw InputError(config_.restart.path, "Restart with chained solvers (" +
+                                               config_.chainedSolvers[0].path +
+                                               ") is not supported yet");
+  }
+  if (config_.restart.enabled) {
+    // The continuum-kinematics material keeps damage history the checkpoint does not hold
+    // (the bonds between neighbours each point tracks): refuse rather than lose it.
+    for (const auto& b : blocks_)
+      if (b.damage && b.material->requiresFusedCriticalStretch())
+        throw InputError(config_.restart.path, "restart of block " + b.name +
+                                                   " (continuum-kinematics material with "
+                                                   "damage) is not supported yet");
+    checkpoint_ = std::make_unique<Checkpoint>(config_.restart, topology_, *fields_);
+    if (checkpoint_->exists()) resume();
+  }
+  control_ = std::make_unique<RunControl>(config_.restart, comm_);
+}
+
+void Simulation::prepareSolver() {
   {
     Timers::Scope t(timers_, "Setup: time step estimate");
     estimateStableTimeStep();
@@ -386,26 +408,14 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
                          formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
   }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
-  if (s.quasiStatic) checkImplicit();
+  if (s.quasiStatic || s.implicit) checkImplicit();
   if (numSteps_ < 1 && !s.quasiStatic) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
   origin_ = s.initialTime;
-  if (config_.restart.enabled) {
-    // The continuum-kinematics material keeps damage history the checkpoint does not hold
-    // (the bonds between neighbours each point tracks): refuse rather than lose it.
-    for (const auto& b : blocks_)
-      if (b.damage && b.material->requiresFusedCriticalStretch())
-        throw InputError(config_.restart.path, "restart of block " + b.name +
-                                                   " (continuum-kinematics material with "
-                                                   "damage) is not supported yet");
-    checkpoint_ = std::make_unique<Checkpoint>(config_.restart, topology_, *fields_);
-    if (checkpoint_->exists()) resume();
-  }
-  control_ = std::make_unique<RunControl>(config_.restart, comm_);
   divergence_ = std::make_unique<DivergenceMonitor>(
-      topology_.numOwned, horizon,
+      topology_.numOwned, fields_->node("Horizon", 1),
       [this](int i) {
         return "point " + std::to_string(topology_.overlapGlobalId[i] + 1) + " (block " +
                blocks_[blockIndexOfPoint_[i]].name + ")";
@@ -693,8 +703,29 @@ void Simulation::reportSetup() {
 }
 
 void Simulation::run() {
-  if (config_.solver.quasiStatic) {
-    runQuasiStatic();
+  runSolver();
+  // Chained solvers (Solver1, Solver2, ...): each continues from the state the one before left,
+  // with step numbers and times continuing in the same output files.
+  for (std::size_t k = 0; k < config_.chainedSolvers.size() && !stopped_; ++k) {
+    stepOffset_ = lastStep_;
+    config_.solver = config_.chainedSolvers[k];
+    time_ = config_.solver.initialTime;
+    quasiStatic_.reset();
+    implicit_.reset();
+    prepareSolver();
+    // Prescribed displacements continue from their values at the new initial time.
+    conditions_->resume(time_);
+    if (rank_ == 0) {
+      log_ << config_.solver.path << ": from time " << time_ << ", step " << stepOffset_ << "\n"
+           << std::flush;
+    }
+    runSolver();
+  }
+}
+
+void Simulation::runSolver() {
+  if (config_.solver.quasiStatic || config_.solver.implicit) {
+    runImplicit();
     return;
   }
   // Continued from a checkpoint at the final time: complete, and its outputs stay as they are.
@@ -707,8 +738,11 @@ void Simulation::run() {
     checkFinite(0, time_);
     computeAcceleration();
     divergence_->check(0, time_, a_);
-    outputs_->write(0, time_);
-    if (observer_) observer_(0, time_);
+    // A chained solver starts from the state the previous one wrote as its last record.
+    if (stepOffset_ == 0) {
+      outputs_->write(0, time_);
+      if (observer_) observer_(0, time_);
+    }
   }
   if (resumed_) {
     // Output files of this deck that match the run keep their records up to the checkpoint
@@ -756,9 +790,9 @@ void Simulation::run() {
       Timers::Scope t(timers_, "Divergence check");
       divergence_->check(step, time_, a_);
     }
-    if (outputs_->due(step)) outputs_->write(step, time_);
-    if (observer_) observer_(step, time_);
-    lastStep_ = step;
+    if (outputs_->due(stepOffset_ + step)) outputs_->write(stepOffset_ + step, time_);
+    if (observer_) observer_(stepOffset_ + step, time_);
+    lastStep_ = stepOffset_ + step;
     const auto decision = control_->afterStep(step, step == numSteps_,
                                               checkpoint_ ? checkpoint_->lastWriteSeconds() : 0.0);
     if (decision.checkpoint) writeCheckpoint(step);

@@ -26,6 +26,7 @@
 namespace peridot {
 
 class QuasiStatic;
+class Implicit;
 
 class Simulation {
  public:
@@ -67,6 +68,8 @@ class Simulation {
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
   QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
+  // The Implicit (Newmark) solver of the last run() (null for the others).
+  Implicit* implicit() { return implicit_.get(); }
 
  private:
   void openOutputs();
@@ -81,13 +84,18 @@ class Simulation {
   // Stable time step (SimulationTimeStep.cpp): Peridigm's estimate, and with "Verlet Limit"
   // the Lanczos estimate of the linearized problem's true limit.
   void estimateStableTimeStep();
+  // The time step, number of steps and solver objects of config_.solver (the first solver at
+  // set-up, then each chained solver in turn).
+  void prepareSolver();
+  void runSolver();
   // Restart (SimulationRestart.cpp): continue from the checkpoint, write one, search contact.
   void resume();
   void writeCheckpoint(long long step);
   void searchContact();
-  // Implicit solvers (SimulationImplicit.cpp): checks at set-up, and the QuasiStatic run.
+  // Implicit solvers (SimulationImplicit.cpp): checks at set-up, and the QuasiStatic or
+  // Implicit run.
   void checkImplicit();
-  void runQuasiStatic();
+  void runImplicit();
 
   RunConfig config_;
   MPI_Comm comm_;
@@ -118,9 +126,11 @@ class Simulation {
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
   std::unique_ptr<QuasiStatic> quasiStatic_;
-  double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_
-  long long firstStep_ = 1;  // the first step run() takes (after a checkpoint's step)
-  long long lastStep_ = 0;   // the last step completed
+  std::unique_ptr<Implicit> implicit_;
+  double origin_ = 0;         // time of step 0: time at step n is origin_ + n * dt_
+  long long firstStep_ = 1;   // the first step run() takes (after a checkpoint's step)
+  long long lastStep_ = 0;    // the last step completed
+  long long stepOffset_ = 0;  // chained solvers: the steps of the solvers before this one
   bool resumed_ = false, stopped_ = false;
   int stopSignal_ = 0;
   // Temperature conditions: owned Temperature and Temperature_Change (null without them), and

@@ -2,6 +2,7 @@
 // lives in src/solvers (the explicit Verlet loop stays in Simulation.cpp).
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
+#include "solvers/Implicit.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
@@ -9,12 +10,12 @@ namespace peridot {
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
     throw InputError(config_.restart.path,
-                     "Restart with the QuasiStatic solver is not supported "
-                     "yet");
+                     "Restart with the QuasiStatic and Implicit solvers is not supported yet");
   }
   if (contact_) {
     throw InputError(config_.contact.path,
-                     "contact with the QuasiStatic solver is not supported (nor by Peridigm)");
+                     "contact with the QuasiStatic and Implicit solvers is not supported (nor by "
+                     "Peridigm)");
   }
   // The solver and its tangent are built here, so that a material without a tangent stops the
   // run before any output is written.
@@ -38,12 +39,22 @@ void Simulation::checkImplicit() {
   context.f = f_;
   context.b = b_;
   context.volume = volume_;
-  quasiStatic_ = std::make_unique<QuasiStatic>(config_.solver.quasiStaticConfig, context);
+  context.density = density_.data();
+  context.temperature = temperature_;
+  context.temperatureChange = temperatureChange_;
+  context.stepOffset = stepOffset_;
+  context.predictorFromPrevious = stepOffset_ > 0 && config_.solver.predictorFromPrevious;
+  if (config_.solver.implicit) {
+    implicit_ = std::make_unique<Implicit>(config_.solver.implicitConfig,
+                                           config_.solver.initialTime, numSteps_, context);
+  } else {
+    quasiStatic_ = std::make_unique<QuasiStatic>(config_.solver.quasiStaticConfig, context);
+  }
 }
 
-void Simulation::runQuasiStatic() {
+void Simulation::runImplicit() {
   if (!outputs_) openOutputs();
-  if (rank_ == 0) {
+  if (rank_ == 0 && stepOffset_ == 0) {
     log_ << "Points: " << topology_.globalNumPoints
          << ", bonds (one-sided): " << topology_.globalNumBonds << ", ranks: " << topology_.numRanks
          << "\n";
@@ -51,10 +62,17 @@ void Simulation::runQuasiStatic() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
+  if (implicit_) {
+    implicit_->setRunHooks(outputs_.get(), observer_);
+    implicit_->run();
+    lastStep_ = stepOffset_ + numSteps_;
+    time_ = config_.solver.initialTime + static_cast<double>(numSteps_) * dt_;
+    return;
+  }
   quasiStatic_->setRunHooks(outputs_.get(), observer_);
   quasiStatic_->run();
   const auto& times = config_.solver.quasiStaticConfig.times;
-  lastStep_ = static_cast<long long>(times.size()) - 1;
+  lastStep_ = stepOffset_ + static_cast<long long>(times.size()) - 1;
   time_ = times.back();
 }
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "deck/PeridigmVocabulary.hpp"
 
@@ -111,15 +113,16 @@ SolverConfig readSolver(ListReader s) {
   if (!(sc.finalTime > sc.initialTime)) {
     throw InputError(s.pathOf("Final Time"), "must be larger than the Initial Time");
   }
-  for (const char* other : {"NOXQuasiStatic", "Implicit", "ImplicitDiffusion"}) {
+  for (const char* other : {"NOXQuasiStatic", "ImplicitDiffusion"}) {
     if (s.isSublist(other)) {
       throw InputError(s.pathOf(other),
-                       "this solver is not supported by Peridot yet; use Verlet or QuasiStatic");
+                       "this solver is not supported by Peridot yet; use Verlet, QuasiStatic or "
+                       "Implicit");
     }
   }
   const std::string preconditioner =
       s.choice("Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
-  s.boolean("Initialize Predictor From Previous Solver", false);
+  sc.predictorFromPrevious = s.boolean("Initialize Predictor From Previous Solver", false);
   if (s.isSublist("QuasiStatic")) {
     if (s.has("Verlet")) {
       throw InputError(s.pathOf("Verlet"), "one solver list per Solver: QuasiStatic or Verlet");
@@ -130,6 +133,18 @@ SolverConfig readSolver(ListReader s) {
                                            preconditioner, verbose);
     sc.initialTime = sc.quasiStaticConfig.times.front();
     sc.finalTime = sc.quasiStaticConfig.times.back();
+    s.finish();
+    return sc;
+  }
+  if (s.isSublist("Implicit")) {
+    if (s.has("Verlet")) {
+      throw InputError(s.pathOf("Verlet"), "one solver list per Solver: Implicit or Verlet");
+    }
+    ListReader im = s.sublist("Implicit");
+    sc.implicit = true;
+    sc.implicitConfig = readImplicit(im, preconditioner, verbose);
+    sc.fixedDtGiven = true;
+    sc.fixedDt = sc.implicitConfig.dt;
     s.finish();
     return sc;
   }
@@ -457,11 +472,23 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   bool haveSolver = false;
   for (const auto& key : top.keys()) {
     if (key.find("Solver") != std::string::npos && top.isSublist(key)) {
+      SolverConfig next = readSolver(top.sublist(key));
       if (haveSolver) {
-        throw InputError(
-            key, "Peridot runs one solver per deck; a second solver list is not supported yet");
+        // Chained solvers run one after the other on the same state: each starts at the time
+        // the one before ends.
+        const SolverConfig& previous =
+            config.chainedSolvers.empty() ? config.solver : config.chainedSolvers.back();
+        const double gap = std::fabs(next.initialTime - previous.finalTime);
+        if (gap > 1e-12 * std::max(1.0, std::fabs(previous.finalTime))) {
+          throw InputError(key + " -> Initial Time",
+                           "a chained solver starts where the previous one (" + previous.path +
+                               ") ends: expected " + formatNumber(previous.finalTime) + ", got " +
+                               formatNumber(next.initialTime));
+        }
+        config.chainedSolvers.push_back(std::move(next));
+      } else {
+        config.solver = std::move(next);
       }
-      config.solver = readSolver(top.sublist(key));
       haveSolver = true;
     } else if (key.find("Output") != std::string::npos && top.isSublist(key)) {
       config.outputs.push_back(readOutput(top.sublist(key), key));

@@ -12,6 +12,7 @@
 #include "damage/DamageModel.hpp"
 #include "discretization/Discretization.hpp"
 #include "materials/MaterialModel.hpp"
+#include "solvers/ImplicitConfig.hpp"
 #include "solvers/QuasiStaticConfig.hpp"
 
 namespace peridot {
@@ -58,6 +59,11 @@ struct SolverConfig {
   bool verletLimitEstimate = false;
   bool quasiStatic = false;  // a QuasiStatic list instead of Verlet
   QuasiStaticConfig quasiStaticConfig;
+  bool implicit = false;  // an Implicit (Newmark) list instead of Verlet
+  ImplicitConfig implicitConfig;
+  // Initialize Predictor From Previous Solver: a chained QuasiStatic solver's first load step
+  // starts from the velocity the previous solver left (times the step's duration).
+  bool predictorFromPrevious = false;
 };
 
 struct OutputConfig {
@@ -94,7 +100,10 @@ struct RunConfig {
   std::vector<BlockGroupConfig> blocks;
   std::vector<NodeSetSpec> nodeSets;
   std::vector<ConditionConfig> conditions;
-  SolverConfig solver;
+  SolverConfig solver;  // the first solver list
+  // Peridigm's chained solvers: the solver lists after the first, in deck order, each starting
+  // where the previous one ended (its Initial Time is the previous Final Time).
+  std::vector<SolverConfig> chainedSolvers;
   std::vector<OutputConfig> outputs;
   std::vector<ComputeConfig> computes;
   ContactConfig contact;

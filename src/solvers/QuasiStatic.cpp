@@ -1,11 +1,5 @@
 #include "solvers/QuasiStatic.hpp"
 
-#include <BelosBlockCGSolMgr.hpp>
-#include <BelosBlockGmresSolMgr.hpp>
-#include <BelosLinearProblem.hpp>
-#include <BelosTpetraAdapter.hpp>
-#include <Ifpack2_Factory.hpp>
-#include <Tpetra_Vector.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,14 +10,11 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "solvers/LinearSolve.hpp"
 
 namespace peridot {
 
 namespace {
-
-using MV = Tpetra::MultiVector<double, LocalOrdinal, GlobalOrdinal>;
-using OP = Tpetra::Operator<double, LocalOrdinal, GlobalOrdinal>;
-using RowMatrix = Tpetra::RowMatrix<double, LocalOrdinal, GlobalOrdinal>;
 
 const char* kHeldField = "QuasiStatic_Held";
 // Peridigm's schedule: plain Newton for 8 iterations, then damped Newton with the tangent
@@ -36,90 +27,6 @@ double globalNorm(const std::vector<double>& values, MPI_Comm comm) {
   for (double v : values) local += v * v;
   MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
   return std::sqrt(total);
-}
-
-// Block-diagonal (3x3 per point) Jacobi preconditioner: Peridigm's "Block 3x3".
-class BlockJacobi : public OP {
- public:
-  explicit BlockJacobi(const CrsMatrix& A) : map_(A.getRowMap()) {
-    const int points = static_cast<int>(A.getNodeNumRows() / 3);
-    inverse_.assign(9 * static_cast<std::size_t>(points), 0.0);
-    const auto colMap = A.getColMap();
-    for (int i = 0; i < points; ++i) {
-      double block[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-      const GlobalOrdinal base = map_->getGlobalElement(3 * i);
-      for (int r = 0; r < 3; ++r) {
-        CrsMatrix::local_inds_host_view_type columns;
-        CrsMatrix::values_host_view_type values;
-        A.getLocalRowView(3 * i + r, columns, values);
-        for (std::size_t k = 0; k < columns.extent(0); ++k) {
-          const GlobalOrdinal g = colMap->getGlobalElement(columns(k));
-          if (g >= base && g < base + 3) block[3 * r + (g - base)] = values(k);
-        }
-      }
-      invert(block, &inverse_[9 * static_cast<std::size_t>(i)]);
-    }
-  }
-  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
-  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
-  void apply(const MV& X, MV& Y, Teuchos::ETransp = Teuchos::NO_TRANS, double alpha = 1.0,
-             double beta = 0.0) const override {
-    const int points = static_cast<int>(inverse_.size() / 9);
-    for (std::size_t col = 0; col < X.getNumVectors(); ++col) {
-      const auto x = X.getData(col);
-      auto y = Y.getDataNonConst(col);
-      for (int i = 0; i < points; ++i) {
-        const double* m = &inverse_[9 * static_cast<std::size_t>(i)];
-        for (int r = 0; r < 3; ++r) {
-          const double z =
-              m[3 * r] * x[3 * i] + m[3 * r + 1] * x[3 * i + 1] + m[3 * r + 2] * x[3 * i + 2];
-          y[3 * i + r] = alpha * z + (beta == 0.0 ? 0.0 : beta * y[3 * i + r]);
-        }
-      }
-    }
-  }
-
- private:
-  // Inverse of a symmetric positive 3x3 block; a singular block (no stiffness) acts as the
-  // identity on its degrees of freedom.
-  static void invert(const double* a, double* out) {
-    const double c00 = a[4] * a[8] - a[5] * a[7], c01 = a[5] * a[6] - a[3] * a[8],
-                 c02 = a[3] * a[7] - a[4] * a[6];
-    const double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
-    const double scale = std::fabs(a[0]) + std::fabs(a[4]) + std::fabs(a[8]);
-    if (!(std::fabs(det) > 1e-14 * scale * scale * scale)) {
-      for (int r = 0; r < 9; ++r) out[r] = (r % 4 == 0) ? (a[r] != 0 ? 1.0 / a[r] : 1.0) : 0.0;
-      return;
-    }
-    out[0] = c00 / det;
-    out[1] = (a[2] * a[7] - a[1] * a[8]) / det;
-    out[2] = (a[1] * a[5] - a[2] * a[4]) / det;
-    out[3] = c01 / det;
-    out[4] = (a[0] * a[8] - a[2] * a[6]) / det;
-    out[5] = (a[2] * a[3] - a[0] * a[5]) / det;
-    out[6] = c02 / det;
-    out[7] = (a[1] * a[6] - a[0] * a[7]) / det;
-    out[8] = (a[0] * a[4] - a[1] * a[3]) / det;
-  }
-  Teuchos::RCP<const Map> map_;
-  std::vector<double> inverse_;
-};
-
-// Damped Newton (Peridigm): diagonal d -> scale d + shift max|d|.
-void dampDiagonal(CrsMatrix& A, double scale, double shift) {
-  Tpetra::Vector<double, LocalOrdinal, GlobalOrdinal> diagonal(A.getRowMap());
-  A.getLocalDiagCopy(diagonal);
-  const double largest = diagonal.normInf();
-  const auto colMap = A.getColMap();
-  const auto rowMap = A.getRowMap();
-  const auto d = diagonal.getData(0);
-  A.resumeFill();
-  for (LocalOrdinal r = 0; r < static_cast<LocalOrdinal>(A.getNodeNumRows()); ++r) {
-    const LocalOrdinal column = colMap->getLocalElement(rowMap->getGlobalElement(r));
-    const double value = scale * d[r] + shift * largest;
-    A.replaceLocalValues(r, 1, &value, &column);
-  }
-  A.fillComplete(A.getDomainMap(), A.getRangeMap());
 }
 
 }  // namespace
@@ -195,68 +102,15 @@ double QuasiStatic::heldDiagonal() const {
   return total[1] > 0 && total[0] > 0 ? total[0] / total[1] : 1.0;
 }
 
-int QuasiStatic::solveLinear(bool damped, bool precondition, int step, int iteration) {
-  (void)step;
-  (void)iteration;
-  auto A = tangent_->matrix();
-  const auto map = A->getRowMap();
-  auto B = Teuchos::rcp(new MV(map, 1));
-  auto X = Teuchos::rcp(new MV(map, 1));
-  {
-    auto b = B->getDataNonConst(0);
-    for (std::size_t k = 0; k < residual_.size(); ++k) b[k] = residual_[k];
-  }
-  (void)damped;
-  auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
-  Teuchos::RCP<OP> preconditioner;
-  if (precondition && config_.preconditioner == "Full Tangent") {
-    auto ilu = Ifpack2::Factory::create<RowMatrix>("RILUK", A);
-    Teuchos::ParameterList params;
-    params.set("fact: iluk level-of-fill", 0);
-    ilu->setParameters(params);
-    ilu->initialize();
-    ilu->compute();
-    preconditioner = ilu;
-  } else if (precondition && config_.preconditioner == "Block 3x3") {
-    preconditioner = Teuchos::rcp(new BlockJacobi(*A));
-  }
-  if (!preconditioner.is_null()) problem->setLeftPrec(preconditioner);
-  if (config_.linearSolver == "BlockCG") problem->setHermitian();
-  problem->setProblem();
-  auto params = Teuchos::rcp(new Teuchos::ParameterList);
-  params->set("Block Size", 1);
-  params->set("Maximum Iterations", config_.linearMaxIterations > 0
-                                        ? config_.linearMaxIterations
-                                        : static_cast<int>(A->getGlobalNumRows()));
-  params->set("Convergence Tolerance", config_.linearTolerance);
-  int verbosity = Belos::Errors + Belos::Warnings;
-  if (config_.printLinearStatus) {
-    verbosity += Belos::StatusTestDetails;
-    params->set("Output Frequency", 1);
-  } else {
-    params->set("Output Frequency", -1);
-  }
-  params->set("Verbosity", verbosity);
-  params->set("Output Style", static_cast<int>(Belos::Brief));
-  Teuchos::RCP<Belos::SolverManager<double, MV, OP>> solver;
-  if (config_.linearSolver == "BlockGMRES") {
-    params->set("Num Blocks", 500);
-    params->set("Maximum Restarts", 10);
-    solver = Teuchos::rcp(new Belos::BlockGmresSolMgr<double, MV, OP>(problem, params));
-  } else {
-    solver = Teuchos::rcp(new Belos::BlockCGSolMgr<double, MV, OP>(problem, params));
-  }
-  Belos::ReturnType result = Belos::Unconverged;
-  try {
-    result = solver->solve();
-  } catch (const std::exception&) {
-    result = Belos::Unconverged;  // a breakdown (e.g. an indefinite tangent under CG)
-  }
-  const int iterations = solver->getNumIters();
-  stats_.linearIterations += iterations;
-  const auto x = X->getData(0);
-  for (std::size_t k = 0; k < increment_.size(); ++k) increment_[k] = held_[k] != 0.0 ? 0.0 : x[k];
-  return result == Belos::Converged ? iterations : -1;
+int QuasiStatic::solveLinear(bool precondition) {
+  LinearSolverSettings settings;
+  settings.solver = config_.linearSolver;
+  settings.maxIterations = config_.linearMaxIterations;
+  settings.tolerance = config_.linearTolerance;
+  settings.printStatus = config_.printLinearStatus;
+  settings.preconditioner = config_.preconditioner;
+  return solveTangentSystem(tangent_->matrix(), residual_, held_, settings, precondition,
+                            increment_, stats_.linearIterations);
 }
 
 double QuasiStatic::lineSearch(double residualNorm, double time) {
@@ -264,7 +118,13 @@ double QuasiStatic::lineSearch(double residualNorm, double time) {
   // best of a few shorter steps (Peridigm's candidates), even if none lowers it.
   const int n3 = static_cast<int>(start_.size());
   for (int k = 0; k < n3; ++k) start_[k] = c_.u[k];
+  // Bond damage is irreversible: a trial that breaks bonds and is then rejected must not leave
+  // them broken, so every trial starts from the damage before the search.
+  std::vector<float>* damage =
+      c_.evaluator->state().bondDamage ? &c_.fields->bondFloat("Bond_Damage") : nullptr;
+  if (damage) startDamage_ = *damage;
   auto tryStep = [&](double alpha) {
+    if (damage) std::copy(startDamage_.begin(), startDamage_.end(), damage->begin());
     for (int k = 0; k < n3; ++k) c_.u[k] = start_[k] + alpha * increment_[k];
     return evaluateResidual(time);
   };
@@ -290,8 +150,14 @@ void QuasiStatic::run() {
   if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
   evaluateResidual(time);
   for (int k = 0; k < n3; ++k) c_.a[k] = 0.0;
-  c_.outputs->write(0, time);
-  if (c_.observer) c_.observer(0, time);
+  if (c_.stepOffset == 0) {
+    c_.outputs->write(0, time);
+    if (c_.observer) c_.observer(0, time);
+  }
+  // Initialize Predictor From Previous Solver: the first load step starts from the velocity
+  // the previous solver left.
+  if (c_.predictorFromPrevious)
+    for (int k = 0; k < n3; ++k) predictor[k] = c_.v[k];
   if (c_.rank == 0) {
     log << "QuasiStatic: " << times.size() - 1 << " load steps, " << config_.linearSolver
         << ", preconditioner " << config_.preconditioner << "\n";
@@ -332,7 +198,7 @@ void QuasiStatic::run() {
     const long long linearBefore = stats_.linearIterations;
     while (norm > tolerance && iteration <= config_.maxIterations) {
       if (c_.rank == 0) log << "  iteration " << iteration << ": residual = " << norm << "\n";
-      if (iteration == 1 && step > 1) {
+      if (iteration == 1 && (step > 1 || c_.predictorFromPrevious)) {
         // Predictor: the previous step's rate of displacement over this step.
         for (int k = 0; k < n3; ++k) increment_[k] = held_[k] != 0.0 ? 0.0 : predictor[k] * dt;
       } else {
@@ -349,15 +215,14 @@ void QuasiStatic::run() {
         int linear;
         {
           Timers::Scope timer(*c_.timers, "Linear solve");
-          linear = solveLinear(damped, config_.preconditioner != "None", static_cast<int>(step),
-                               iteration);
+          linear = solveLinear(config_.preconditioner != "None");
           if (linear < 0) {
             if (c_.rank == 0)
               log << "  --linear solver did not converge: damped tangent, no preconditioner--\n";
             if (!damped)
               dampDiagonal(*tangent_->matrix(), config_.dampedScale, config_.dampedShift);
             damped = true;
-            linear = solveLinear(true, false, static_cast<int>(step), iteration);
+            linear = solveLinear(false);
           }
         }
         if (linear < 0) {
@@ -412,9 +277,9 @@ void QuasiStatic::run() {
           << " Newton, " << linearThisStep << " linear iterations, " << seconds << " s)\n"
           << std::flush;
     }
-    if (c_.outputs->due(static_cast<long long>(step)))
-      c_.outputs->write(static_cast<long long>(step), time);
-    if (c_.observer) c_.observer(static_cast<long long>(step), time);
+    const long long record = c_.stepOffset + static_cast<long long>(step);
+    if (c_.outputs->due(record)) c_.outputs->write(record, time);
+    if (c_.observer) c_.observer(record, time);
   }
   stats_.tangentBytes = tangent_->bytes();
   double tangentBytes = 0;

@@ -42,18 +42,19 @@ class QuasiStatic {
   double evaluateResidual(double time);  // evaluate forces at y = x + u; returns ||R||
   void updateHeld();
   double heldDiagonal() const;
-  int solveLinear(bool damped, bool precondition, int step, int iteration);
+  int solveLinear(bool precondition);  // -1: not converged
   double lineSearch(double residualNorm, double time);
 
   QuasiStaticConfig config_;
   SolverContext c_;
   std::unique_ptr<Tangent> tangent_;
-  double* held_ = nullptr;         // overlap, 3 per point
-  std::vector<double> baseHeld_;   // owned: prescribed and planar z
-  std::vector<double> residual_;   // owned, 3 per point: R = V (f + b), 0 where held
-  std::vector<double> increment_;  // owned: the Newton direction
-  std::vector<double> start_;      // owned: u at the start of the step / line search
-  long long rankDeficient_ = 0;    // points held because no intact bond is left
+  double* held_ = nullptr;          // overlap, 3 per point
+  std::vector<double> baseHeld_;    // owned: prescribed and planar z
+  std::vector<double> residual_;    // owned, 3 per point: R = V (f + b), 0 where held
+  std::vector<double> increment_;   // owned: the Newton direction
+  std::vector<double> start_;       // owned: u at the start of the step / line search
+  std::vector<float> startDamage_;  // bond damage at the start of the line search
+  long long rankDeficient_ = 0;     // points held because no intact bond is left
   Statistics stats_;
 };
 

@@ -35,7 +35,16 @@ struct SolverContext {
   double *x = nullptr, *y = nullptr, *u = nullptr, *v = nullptr, *a = nullptr, *f = nullptr,
          *b = nullptr;
   const double* volume = nullptr;
+  const double* density = nullptr;  // owned, per point
+  // Owned temperature and temperature change (null without temperature conditions).
+  double *temperature = nullptr, *temperatureChange = nullptr;
   std::function<void(long long, double)> observer;
+  // Chained solvers: the steps taken by the solvers before (outputs and the observer see step
+  // numbers stepOffset + n); a chained solver does not write its initial state again (the
+  // previous solver's last record). The previous solver's velocity is the first load step's
+  // predictor when predictorFromPrevious is set (QuasiStatic).
+  long long stepOffset = 0;
+  bool predictorFromPrevious = false;
 };
 
 }  // namespace peridot

@@ -90,7 +90,7 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
 }
 
 void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks,
-                       const double* held, double heldDiagonal) {
+                       const double* held, double heldDiagonal, const double* addedDiagonal) {
   std::fill(blocks_.values.begin(), blocks_.values.end(), 0.0);
   ModelState s = state;
   s.bondLaw = BondLaw();  // linear (checked at construction)
@@ -105,8 +105,12 @@ void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks
         for (int e = 0; e < 3; ++e)
           if (held[3 * a + r] != 0.0 || held[3 * c + e] != 0.0) v[3 * r + e] = 0.0;
       if (c == a && a < topology_.numOwned)
-        for (int r = 0; r < 3; ++r)
-          if (held[3 * a + r] != 0.0) v[4 * r] = heldDiagonal;
+        for (int r = 0; r < 3; ++r) {
+          if (held[3 * a + r] != 0.0)
+            v[4 * r] = heldDiagonal;
+          else if (addedDiagonal)
+            v[4 * r] += addedDiagonal[3 * a + r];
+        }
     }
   }
   overlap_->resumeFill();

@@ -26,9 +26,11 @@ class Tangent {
           const std::string& solverPath);
   // Fills the blocks at the current state (after an evaluation) and assembles the owned matrix.
   // `held` (3 per overlap point, ghosts refreshed): 1 for a degree of freedom held fixed; its
-  // row and column are zeroed and its diagonal set to `heldDiagonal`.
+  // row and column are zeroed and its diagonal set to `heldDiagonal`. `addedDiagonal` (owned, 3
+  // per point, may be null) is added to the diagonal of the free degrees of freedom: the mass
+  // term M / (beta dt^2) of Newmark's method.
   void assemble(const ModelState& state, const std::vector<Block>& blocks, const double* held,
-                double heldDiagonal);
+                double heldDiagonal, const double* addedDiagonal = nullptr);
   Teuchos::RCP<CrsMatrix> matrix() const { return owned_; }
   // The point-level blocks of the last assembly (overlap rows), for tests and diagnostics.
   const TangentBlocks& blocks() const { return blocks_; }

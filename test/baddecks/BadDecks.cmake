@@ -199,7 +199,7 @@ peridot_baddeck(shorter_than_one_step DECK shorter_than_one_step.yaml
 peridot_baddeck(contact_without_models DECK contact_without_models.yaml
   EXPECT [[Contact -> Models: required list is missing]])
 peridot_baddeck(noxquasistatic_unsupported DECK noxquasistatic_unsupported.yaml
-  EXPECT [[Solver -> NOXQuasiStatic: this solver is not supported by Peridot yet; use Verlet or QuasiStatic]])
+  EXPECT [[Solver -> NOXQuasiStatic: this solver is not supported by Peridot yet; use Verlet, QuasiStatic or Implicit]])
 peridot_baddeck(restart_unknown_key DECK restart_unknown_key.yaml
   EXPECT [[Restart -> Checkpoint Frequence: unknown parameter]])
 peridot_baddeck(restart_bad_frequency DECK restart_bad_frequency.yaml

@@ -102,3 +102,16 @@ add_test(NAME ranks_QuasiStaticBar
     -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
 set_tests_properties(ranks_QuasiStaticBar PROPERTIES
   ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# Chained solvers (QuasiStatic then Implicit, Peridigm's XML form): the same at 1, 2 and 3 ranks
+# within implicitchain.comp, all records in one file.
+add_test(NAME ranks_ImplicitChainBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ImplicitChainBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/ImplicitChainBar
+    -DDECK=ImplicitChainBar.xml -DOUTPUT=ImplicitChainBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/implicitchain.comp
+    "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+set_tests_properties(ranks_ImplicitChainBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
