@@ -9,9 +9,9 @@
 #include <mpi.h>
 
 #include <array>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <sstream>
 #include <string>
