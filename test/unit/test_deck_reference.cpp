@@ -138,6 +138,9 @@ bool inject(Teuchos::ParameterList& deck, const std::string& where, const std::s
     material.set("Material Model", key);
   } else if (where.rfind(materialPrefix, 0) == 0) {
     material.set("Material Model", where.substr(materialPrefix.size()));
+    // The correspondence models require their hourglass coefficient before anything else.
+    if (where.find("Correspondence") != std::string::npos)
+      material.set("Hourglass Coefficient", 0.02);
     if (key == "Thermal Expansion Coefficient") {
       material.set(key, 1e-5);
     } else {
@@ -204,7 +207,9 @@ TEST(DeckReference, EveryRefusedKeyIsNamedInTheError) {
           << where.first << " -> " << where.second << ": the error does not name it: " << e.what();
     }
   }
-  EXPECT_GT(refused, 60);
+  // The table's size, so the loop cannot silently cover nothing: 58 rows after the
+  // correspondence outputs became supported.
+  EXPECT_GT(refused, 50);
 }
 
 }  // namespace
