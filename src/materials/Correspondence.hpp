@@ -50,7 +50,7 @@ double vonMises(const double* a);
 // Shape tensor inverse and deformation gradient of point i from the current coordinates `y`
 // (one pass over its bonds, weights omega (1 - d) on its own side). Returns false when the shape
 // tensor is singular (Kinv and F are then zero). `useDamage` false ignores the bond damage
-// (Peridigm's Deformation_Gradient compute).
+// (Peridigm's Deformation_Gradient compute). In a planar run F is the in-plane F with F_zz = 1.
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
                                        bool useDamage = true);
 
