@@ -120,10 +120,11 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
         correspondence::shapeTensorAndDeformationGradient(state, i, Kinv, out.data() + 9 * i,
                                                           false);
     }
-  } else if (name == "Shape_Tensor_Inverse" || name == "Cauchy_Stress" ||
-             name == "Unrotated_Cauchy_Stress" || name == "Von_Mises_Stress" ||
-             name == "Hourglass_Force_Density" || name == "Equivalent_Plastic_Strain" ||
-             name == "Rotation_Tensor" || name == "Left_Stretch_Tensor") {
+  } else if (name == "Partial_Stress" || name == "Shape_Tensor_Inverse" ||
+             name == "Cauchy_Stress" || name == "Unrotated_Cauchy_Stress" ||
+             name == "Von_Mises_Stress" || name == "Hourglass_Force_Density" ||
+             name == "Equivalent_Plastic_Strain" || name == "Rotation_Tensor" ||
+             name == "Left_Stretch_Tensor") {
     // Maintained by the correspondence models (zero at the points of other blocks).
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
   } else if (name == "Contact_Force") {

@@ -284,6 +284,9 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Deformation_GradientZX", 1, "component ZX of Deformation_Gradient"},
       {"Deformation_GradientZY", 1, "component ZY of Deformation_Gradient"},
       {"Deformation_GradientZZ", 1, "component ZZ of Deformation_Gradient"},
+      {"Partial_Stress", 9,
+       "Peridigm's partial stress of an \"Elastic\" block with Compute Partial Stress: sum of "
+       "the point's own pair forces (x) xi V_j"},
       {"Shape_Tensor_Inverse", 9, "inverse of the shape tensor K (correspondence models)"},
       {"Cauchy_Stress", 9, "Cauchy stress (correspondence models)"},
       {"Unrotated_Cauchy_Stress", 9,
