@@ -252,6 +252,10 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
     values.push_back(reduce(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
     return;
   }
+  if (name == "Nonlinear_Solver_Iterations") {
+    values.push_back(s_.nonlinearIterations ? static_cast<double>(*s_.nonlinearIterations) : 0.0);
+    return;
+  }
   if (name == "Global_Linear_Momentum" || name == "Global_Angular_Momentum") {
     // Peridigm's definition: the magnitude of each block's total momentum, summed over blocks.
     const std::string perPoint = name.substr(7);

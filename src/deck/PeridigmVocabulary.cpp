@@ -52,7 +52,6 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
       "Flux_Divergence",
       "Fluid_Pressure_U",
       "Flux_Density",
-      "Nonlinear_Solver_Iterations",
       "OBC_Functional",
       "JIntegral",
       "Bond_Visualization",

@@ -308,6 +308,9 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "|sum of Linear_Momentum| per block, summed over blocks (Peridigm's definition)"},
       {"Global_Angular_Momentum", 0,
        "|sum of Angular_Momentum| per block, summed over blocks (Peridigm's definition)"},
+      {"Nonlinear_Solver_Iterations", 0,
+       "nonlinear iterations of the last step: Newton (QuasiStatic, Implicit), relaxation "
+       "(Adaptive Dynamic Relaxation); 0 under Verlet (global variable)"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},
