@@ -14,7 +14,9 @@ broken bond there (Damage > 0) is printed too. Cracks at the last record: the da
 Checks (exit status 1 when they fail): --check-middle-third: every point of the
 initiation lies in s in [S/3, 2S/3]; --check-after-reflection: it comes after 1.5 S/c, the time the pulse front from
 one end needs to reach the far end and, reflected there, the middle of the bar
-(c = sqrt(E/(rho(1-nu^2))), plane stress). Needs python3-netcdf4 and python3-matplotlib."""
+(c = sqrt(E/(rho(1-nu^2))), plane stress); --check-during-reflected-pulse: it comes no later than
+1.5 S/c + t1, when the reflected pulse (t1 = 300 us long) has passed the middle; --check-no-crack:
+there is none. Needs python3-netcdf4 and python3-matplotlib."""
 import argparse
 import math
 import sys
@@ -27,6 +29,7 @@ import netCDF4
 import numpy as np
 
 E, NU, RHO = 210.0e9, 0.3, 7580.0
+T1 = 300.0e-6  # pulse duration
 C_PLATE = math.sqrt(E / (RHO * (1.0 - NU**2)))  # plane-stress longitudinal wave speed
 
 
@@ -40,6 +43,35 @@ def read_so(path):
     meta = {head[i]: float(head[i + 2]) for i in range(len(head) - 2) if head[i + 1] == "="}
     so = np.loadtxt(path)
     return so[:, 0], so[:, 1], meta["S"], meta["W_B"], meta["horizon"]
+
+
+def critical_stretch(delta, g_c=1.0):
+    """Paper 004 eq. (3.3), 2D, with the plane-stress in-plane bulk modulus (as Peridot)."""
+    k, g = E / (2.0 * (1.0 - NU)), E / (2.0 * (1.0 + NU))
+    return math.sqrt(g_c / (delta * (6.0 * g / math.pi + 16.0 / (9.0 * math.pi**2) * (k - 2.0 * g))))
+
+
+def stretch_history(ds, s, S, delta):
+    """Per record: the largest bond stretch among bonds (pairs within the horizon) whose
+    midpoint lies farther than 3 horizons from both ends, its bond's s (midpoint) and offset."""
+    from scipy.spatial import cKDTree
+
+    nodal = names(ds, "name_nod_var")
+    X = np.c_[ds.variables["coordx"][:], ds.variables["coordy"][:]]
+    ux = ds.variables[f"vals_nod_var{nodal.index('DisplacementX') + 1}"]
+    uy = ds.variables[f"vals_nod_var{nodal.index('DisplacementY') + 1}"]
+    pairs = np.array(sorted(cKDTree(X).query_pairs(delta)))
+    L = np.linalg.norm(X[pairs[:, 1]] - X[pairs[:, 0]], axis=1)
+    sm = 0.5 * (s[pairs[:, 0]] + s[pairs[:, 1]])
+    inner = (sm > 3 * delta) & (sm < S - 3 * delta)
+    pairs, L, sm = pairs[inner], L[inner], sm[inner]
+    out = []
+    for r in range(len(ds.variables["time_whole"])):
+        Y = X + np.c_[ux[r], uy[r]]
+        st = (np.linalg.norm(Y[pairs[:, 1]] - Y[pairs[:, 0]], axis=1) - L) / L
+        k = int(np.argmax(st))
+        out.append((st[k], sm[k], pairs[k, 0]))
+    return out
 
 
 def groups(s_values, gap):
@@ -63,6 +95,11 @@ def main():
                     help="times to plot [s] (default: initiation, 2.9 ms, 5.8 ms, last)")
     ap.add_argument("--check-middle-third", action="store_true")
     ap.add_argument("--check-after-reflection", action="store_true")
+    ap.add_argument("--check-during-reflected-pulse", action="store_true")
+    ap.add_argument("--check-no-crack", action="store_true")
+    ap.add_argument("--stretch", action="store_true",
+                    help="print the running maximum of the bond stretch away from the ends and "
+                    "the load factor s_c / max that a crack needs, up to the first broken bond")
     a = ap.parse_args()
     base = a.exodus.rsplit(".", 1)[0]
     s, o, S, W, delta = read_so(base + "_so.txt")
@@ -77,6 +114,19 @@ def main():
     print(f"{len(s)} points, S = {S:.4f} m, horizon = {delta:.5g} m, {len(times)} records to "
           f"t = {times[-1] * 1e3:.3f} ms; c = {C_PLATE:.1f} m/s, front back at mid-bar after "
           f"1.5 S/c = {t_reflect * 1e3:.3f} ms")
+    if a.stretch:
+        sc = critical_stretch(delta)
+        print(f"critical stretch s_c = {sc:.5g} (eq. 3.3, G_c = 1 N/m); running maximum of the "
+              "bond stretch away from the ends:")
+        top = 0.0
+        for r, (st, sm, j) in enumerate(stretch_history(ds, s, S, delta)):
+            if (damage[r][inner] > 0).any():
+                print(f"  (bonds break from t = {times[r] * 1e3:.3f} ms on: history ends)")
+                break
+            if st > top * 1.02 and st > 0:
+                top = st
+                print(f"  t = {times[r] * 1e3:.3f} ms: {st:.4g} at s/S = {sm / S:.3f}, "
+                      f"o/W_B = {o[j] / W:+.2f}; load factor for a break s_c/max = {sc / st:.2f}")
     first_any = next((r for r in range(len(times)) if (damage[r][inner] > 0).any()), None)
     if first_any is not None:
         i = np.flatnonzero(inner & (damage[first_any] > 0))
@@ -87,7 +137,8 @@ def main():
     ok = True
     if init is None:
         print(f"no damage above {a.threshold} away from the ends by {times[-1] * 1e3:.3f} ms")
-        ok = not (a.check_middle_third or a.check_after_reflection)
+        ok = not (a.check_middle_third or a.check_after_reflection
+                  or a.check_during_reflected_pulse)
     else:
         i = np.flatnonzero(inner & (damage[init] > a.threshold))
         print(f"initiation (damage > {a.threshold}): t = {times[init] * 1e3:.3f} ms (previous "
@@ -103,6 +154,13 @@ def main():
             ok = False
         if a.check_after_reflection and not times[init] > t_reflect:
             print(f"FAIL: initiation at {times[init] * 1e3:.3f} ms, before 1.5 S/c")
+            ok = False
+        if a.check_during_reflected_pulse and not times[init] <= t_reflect + T1:
+            print(f"FAIL: initiation at {times[init] * 1e3:.3f} ms, after 1.5 S/c + t1 = "
+                  f"{(t_reflect + T1) * 1e3:.3f} ms")
+            ok = False
+        if a.check_no_crack:
+            print("FAIL: a crack initiates")
             ok = False
     last = damage[-1]
     cracked = last > a.threshold
