@@ -39,6 +39,9 @@ class DamageModel {
   // A run continued from a checkpoint: the model's history fields are restored and the next
   // evaluation closes a step (it is not the initial state).
   virtual void resume() {}
+  // Whether the damage integrates a rate over time (ModelState::dt): it then needs a solver
+  // with time steps; the load-stepped solvers evaluate with dt = 0 and refuse it.
+  virtual bool integratesInTime() const { return false; }
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -36,6 +36,7 @@ class LSJT : public DamageModel {
             std::ostream& log) override;
   double criticalStretch() const { return criticalStretch_.value(); }
   void resume() override { started_ = true; }
+  bool integratesInTime() const override { return true; }
 
   static constexpr const char* kHistoryIntegral = "LSJT_History_Integral";
 

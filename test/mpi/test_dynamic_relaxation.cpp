@@ -182,6 +182,13 @@ TEST(DynamicRelaxation, DeckErrorsNameTheKey) {
   message = errorOf<InputError>(
       [&] { makeSimulation(deck(false, kRelaxation + "      Line Search: true\n")); });
   EXPECT_NE(message.find("Line Search"), std::string::npos) << message;
+  // A damage law integrated over time would never grow under dt = 0: refused, for QuasiStatic too.
+  for (const std::string& solver : {kRelaxation, kQuasiStatic}) {
+    std::string text = deck(false, solver, 1e-3);
+    text.replace(text.find("Damage Model: Critical Stretch"), 30, "Damage Model: LSJ-T");
+    message = errorOf<InputError>([&] { makeSimulation(text); });
+    EXPECT_NE(message.find("integrates over time"), std::string::npos) << message;
+  }
 }
 
 }  // namespace
