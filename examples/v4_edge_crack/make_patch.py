@@ -28,13 +28,20 @@ ap.add_argument("--model", choices=["paper", "consistent"], default="paper")
 ap.add_argument("--rate", type=float, default=400.0, help="traction rate, Pa/s")
 ap.add_argument("--final", type=float, default=0.55, help="final time, s")
 ap.add_argument("--horizon-ratio", type=float, default=3.015)
+ap.add_argument("--material", choices=["normalized-pmb", "pmb", "lps"], default="normalized-pmb",
+                help="with --model consistent: the model of the speed/accuracy map "
+                     "(bench/tradeoff/fracture_map.py); the same material, E = 1e4, nu = 1/4")
 a = ap.parse_args()
+if a.material != "normalized-pmb" and a.model != "consistent":
+    ap.error("--material needs --model consistent (the paper's constant is normalized PMB's)")
 
 L, H, A = 1.0, 2.0, 0.125
 nx, ny = round(L / a.dx), round(H / a.dx)
 dx = L / nx
 delta = a.horizon_ratio * dx
 tag = f"dx{a.dx:g}".replace(".", "p") + ("" if a.horizon_ratio == 3.015 else f"_m{a.horizon_ratio:g}".replace(".", "p"))
+if a.material != "normalized-pmb":
+    tag += "_" + a.material
 prefix = f"v4_{tag}_"
 with open(prefix + "points.txt", "w") as f:
     f.write("# x y z block area\n")
@@ -64,6 +71,9 @@ if a.model == "paper":
     modulus = "Bulk Modulus: 9375.0"
 else:
     modulus = "Young's Modulus: 1.0e4"
+model_name = {"normalized-pmb": "Normalized PMB", "pmb": "Elastic Bond Based", "lps": "Elastic"}[a.material]
+if a.material == "lps":
+    modulus += "\n      Poisson's Ratio: 0.25"
 deck = f"""# V4, paper 000 section 3.2, made by make_patch.py {a.dx:g} --model {a.model}: a 1 m x 2 m
 # plane-strain patch, {nx} x {ny} points (dx = {dx:g} m), edge crack y = 1 m, 0 <= x <= 0.125 m,
 # traction sigma = {a.rate:g} t Pa on the layers within delta = {delta:g} m of the top and bottom.
@@ -89,7 +99,7 @@ Peridigm:
         Side_Length: 2.0
   Materials:
     Patch:
-      Material Model: "Normalized PMB"
+      Material Model: "{model_name}"
       Plane Strain: true
       Density: 1.0
       {modulus}
