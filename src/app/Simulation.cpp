@@ -450,7 +450,9 @@ void Simulation::evaluateForces(long long step) {
   if (contact_ && step == 0) searchContact();
   deformPeriodicBox();
   evaluator_->setTime(time_);
-  evaluator_->evaluate(dt_);
+  // Step 0 evaluates the state the run starts from: nothing has moved since, so no rate-form
+  // history (correspondence stress, viscous back state) may advance by a step.
+  evaluator_->evaluate(step == 0 ? 0.0 : dt_);
   if (friction_) {
     // The same value on every rank (it depends on the time alone).
     const double mu = friction_->evaluate(&time_);

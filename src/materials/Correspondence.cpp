@@ -6,6 +6,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "materials/CorrespondenceRate.hpp"
 
 namespace peridot {
 
@@ -181,6 +182,11 @@ CorrespondenceMaterial::CorrespondenceMaterial(ListReader& p, const std::string&
   if (!p.has("Hourglass Coefficient"))
     throw InputError(p.pathOf("Hourglass Coefficient"), "required (a number >= 0, e.g. 0.02)");
   hourglassCoefficient_ = p.nonNegativeNumber("Hourglass Coefficient", 0.0);
+  integration_ =
+      p.choice("Stress Integration", {"Hypoelastic Rate", "Total Lagrangian Green Strain"},
+               "Hypoelastic Rate") == "Hypoelastic Rate"
+          ? StressIntegration::HypoelasticRate
+          : StressIntegration::GreenStrain;
   if (p.has("Apply Shear Correction Factor")) {
     throw InputError(p.pathOf("Apply Shear Correction Factor"),
                      "not available for the correspondence models (as in Peridigm)");
@@ -197,6 +203,8 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
   hourglass_ = fields.node(kHourglassForceDensity, 3);
   rotation_ = fields.node(kRotationTensor, 9);
   leftStretch_ = fields.node(kLeftStretchTensor, 9);
+  velocityGradient_ = fields.node(kVelocityGradient, 9);
+  unrotatedRate_ = fields.node(kUnrotatedRateOfDeformation, 9);
   for (int r = 0; r < 3; ++r) {
     fRow_[r] = fields.node(kDeformationGradientRows[r], 3);
     aRow_[r] = fields.node(kForceTensorRows[r], 3);
@@ -204,14 +212,26 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
 }
 
 std::vector<std::string> CorrespondenceMaterial::outputFields() const {
-  return {kShapeTensorInverse, kDeformationGradient,   kCauchyStress,   kUnrotatedCauchyStress,
-          kVonMisesStress,     kHourglassForceDensity, kRotationTensor, kLeftStretchTensor};
+  return {kShapeTensorInverse, kDeformationGradient,       kCauchyStress,   kUnrotatedCauchyStress,
+          kVonMisesStress,     kHourglassForceDensity,     kRotationTensor, kLeftStretchTensor,
+          kVelocityGradient,   kUnrotatedRateOfDeformation};
+}
+
+std::vector<std::string> CorrespondenceMaterial::historyNodeFields() const {
+  if (!rateForm()) return {};
+  return {kUnrotatedCauchyStress, kRotationTensor, kLeftStretchTensor};
 }
 
 void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<int>& points) {
   checkDimension(s, name_);
   // C = 18 c_hg K / (pi delta^4) of every overlap point (the horizon is known on all of them).
   hourglassConstant_.resize(static_cast<std::size_t>(s.topology->numOverlap));
+  if (rateForm()) {
+    const std::size_t n = 9 * static_cast<std::size_t>(s.topology->numOverlap);
+    unrotatedNew_.resize(n, 0.0);
+    rotationNew_.resize(n, 0.0);
+    leftStretchNew_.resize(n, 0.0);
+  }
   for (int p = 0; p < s.topology->numOverlap; ++p) {
     const double d = s.horizon[p];
     hourglassConstant_[p] =
@@ -233,6 +253,7 @@ void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<i
       deformationGradient_[9 * i + k] = rotation_[9 * i + k] = leftStretch_[9 * i + k] =
           (k % 4 == 0) ? 1.0 : 0.0;
       cauchy_[9 * i + k] = unrotated_[9 * i + k] = 0.0;
+      velocityGradient_[9 * i + k] = unrotatedRate_[9 * i + k] = 0.0;
       fRow_[k / 3][3 * i + k % 3] = deformationGradient_[9 * i + k];
       aRow_[k / 3][3 * i + k % 3] = 0.0;
     }
@@ -246,6 +267,21 @@ void CorrespondenceMaterial::elasticStress(const double* E, double* S) const {
   const double trace = E[0] + E[4] + E[8];
   for (int k = 0; k < 9; ++k) S[k] = 2.0 * constants_.shearModulus * E[k];
   for (int k = 0; k < 9; k += 4) S[k] += lame_ * trace;
+}
+
+void CorrespondenceMaterial::unrotatedCauchyStress(int, const double* d, double dt,
+                                                   const double* sigmaN, double* sigma) {
+  correspondence::hypoelasticIncrement(lame_, constants_.shearModulus, d, dt, sigmaN, sigma);
+}
+
+double CorrespondenceMaterial::rateEnergyDensity(const double* sigma) const {
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
+  double ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev * dev;
+  }
+  return 0.5 * mean * mean / constants_.bulkModulus + 0.25 * ss / constants_.shearModulus;
 }
 
 double CorrespondenceMaterial::energyDensity(int, const double* E) const {
@@ -275,52 +311,103 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
       for (int k = 0; k < 9; ++k) fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;
       continue;
     }
-    double E[9], S[9], P[9];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        // Green strain E = (F^T F - I) / 2
-        double ftf = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
-        E[3 * r + c] = 0.5 * (ftf - (r == c ? 1.0 : 0.0));
+    double P[9];
+    if (rateForm()) {
+      if (!rateStress(s, i, F, Kinv, P) && message.empty()) {
+        char what[160];
+        std::snprintf(what, sizeof what,
+                      " has an inverted or singular deformation gradient "
+                      "(det F = %.6g) at time %.9g",
+                      determinant(F), s.time);
+        message = "Materials -> \"" + name_ + "\": " + describePoint(s, i) + what +
+                  ": the rate form needs F^-1 (Peridigm stops here too, \"failed to invert "
+                  "deformation gradient\")";
       }
-    secondPiolaKirchhoff(i, E, S);
-    multiply(F, S, P);  // first Piola-Kirchhoff P = F S
+    } else {
+      greenStress(i, F, P);
+    }
     double A[9];
     multiply(P, Kinv, A);  // A = P K^-1
     for (int k = 0; k < 9; ++k) {
       fRow_[k / 3][3 * i + k % 3] = F[k];
       aRow_[k / 3][3 * i + k % 3] = A[k];
     }
-    // Cauchy sigma = P F^T / J; unrotated R^T sigma R = U S U / J (F = R U).
-    const double J = determinant(F);
-    double* sigma = cauchy_ + 9 * i;
-    double* unrotated = unrotated_ + 9 * i;
-    if (J > 0) {
-      multiplyTransposed(P, F, sigma);
-      for (int k = 0; k < 9; ++k) sigma[k] /= J;
-      double R[9], tmp[9];
-      if (polarRotation(F, R)) {
-        // R^T sigma R
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            tmp[3 * r + c] =
-                sigma[3 * r] * R[c] + sigma[3 * r + 1] * R[3 + c] + sigma[3 * r + 2] * R[6 + c];
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            unrotated[3 * r + c] = R[r] * tmp[c] + R[3 + r] * tmp[3 + c] + R[6 + r] * tmp[6 + c];
-        std::copy(R, R + 9, rotation_ + 9 * i);
-        multiplyTransposed(F, R, leftStretch_ + 9 * i);  // V = F R^T
-      } else {
-        std::copy(sigma, sigma + 9, unrotated);
-      }
-    } else {
-      // An inverted or flattened point: the force (from P) stays defined, the Cauchy stress
-      // and the polar decomposition do not; report S for sigma rather than a NaN, and keep the
-      // last rotation and stretch.
-      for (int k = 0; k < 9; ++k) sigma[k] = unrotated[k] = S[k];
-    }
-    vonMises_[i] = vonMises(sigma);
+    vonMises_[i] = vonMises(cauchy_ + 9 * i);
   }
   throwIfAnyRank(message, s.topology->comm, true);
+}
+
+bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double* F,
+                                        const double* Kinv, double* P) {
+  using namespace correspondence;
+  double* L = velocityGradient_ + 9 * i;
+  double* d = unrotatedRate_ + 9 * i;
+  double* sigmaNew = unrotatedNew_.data() + 9 * i;
+  double* Rnew = rotationNew_.data() + 9 * i;
+  double* Vnew = leftStretchNew_.data() + 9 * i;
+  double Finv[9];
+  const double J = determinant(F);
+  if (!(J > 0) || !invert(F, Finv) || !velocityGradient(s, i, Kinv, F, L)) {
+    // Keep the history as it was; the run stops (the caller's collective error).
+    std::fill(P, P + 9, 0.0);
+    std::fill(L, L + 9, 0.0);
+    std::fill(d, d + 9, 0.0);
+    std::copy(unrotated_ + 9 * i, unrotated_ + 9 * i + 9, sigmaNew);
+    std::copy(rotation_ + 9 * i, rotation_ + 9 * i + 9, Rnew);
+    std::copy(leftStretch_ + 9 * i, leftStretch_ + 9 * i + 9, Vnew);
+    return false;
+  }
+  flanaganTaylorStep(L, leftStretch_ + 9 * i, rotation_ + 9 * i, s.dt, Vnew, Rnew, d);
+  unrotatedCauchyStress(i, d, s.dt, unrotated_ + 9 * i, sigmaNew);
+  // sigma = R sigma_u R^T, P = J sigma F^-T
+  double tmp[9];
+  double* sigma = cauchy_ + 9 * i;
+  multiply(Rnew, sigmaNew, tmp);
+  multiplyTransposed(tmp, Rnew, sigma);
+  multiplyTransposed(sigma, Finv, P);
+  for (int k = 0; k < 9; ++k) P[k] *= J;
+  return true;
+}
+
+void CorrespondenceMaterial::greenStress(int i, const double* F, double* P) {
+  using namespace correspondence;
+  double E[9], S[9];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      // Green strain E = (F^T F - I) / 2
+      double ftf = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
+      E[3 * r + c] = 0.5 * (ftf - (r == c ? 1.0 : 0.0));
+    }
+  secondPiolaKirchhoff(i, E, S);
+  multiply(F, S, P);  // first Piola-Kirchhoff P = F S
+  // Cauchy sigma = P F^T / J; unrotated R^T sigma R = U S U / J (F = R U).
+  const double J = determinant(F);
+  double* sigma = cauchy_ + 9 * i;
+  double* unrotated = unrotated_ + 9 * i;
+  if (J > 0) {
+    multiplyTransposed(P, F, sigma);
+    for (int k = 0; k < 9; ++k) sigma[k] /= J;
+    double R[9], tmp[9];
+    if (polarRotation(F, R)) {
+      // R^T sigma R
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          tmp[3 * r + c] =
+              sigma[3 * r] * R[c] + sigma[3 * r + 1] * R[3 + c] + sigma[3 * r + 2] * R[6 + c];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          unrotated[3 * r + c] = R[r] * tmp[c] + R[3 + r] * tmp[3 + c] + R[6 + r] * tmp[6 + c];
+      std::copy(R, R + 9, rotation_ + 9 * i);
+      multiplyTransposed(F, R, leftStretch_ + 9 * i);  // V = F R^T
+    } else {
+      std::copy(sigma, sigma + 9, unrotated);
+    }
+  } else {
+    // An inverted or flattened point: the force (from P) stays defined, the Cauchy stress
+    // and the polar decomposition do not; report S for sigma rather than a NaN, and keep the
+    // last rotation and stretch.
+    for (int k = 0; k < 9; ++k) sigma[k] = unrotated[k] = S[k];
+  }
 }
 
 void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector<int>& points) {
@@ -335,6 +422,15 @@ void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector
       sides ? forceLoop<true, true, false>(s, points) : forceLoop<true, false, false>(s, points);
     else
       sides ? forceLoop<false, true, false>(s, points) : forceLoop<false, false, false>(s, points);
+  }
+  if (rateForm()) {
+    for (int i : points) {
+      std::copy(unrotatedNew_.begin() + 9 * i, unrotatedNew_.begin() + 9 * i + 9,
+                unrotated_ + 9 * i);
+      std::copy(rotationNew_.begin() + 9 * i, rotationNew_.begin() + 9 * i + 9, rotation_ + 9 * i);
+      std::copy(leftStretchNew_.begin() + 9 * i, leftStretchNew_.begin() + 9 * i + 9,
+                leftStretch_ + 9 * i);
+    }
   }
   commitHistory(points);
 }
@@ -411,6 +507,10 @@ void CorrespondenceMaterial::forceLoop(const ModelState& s, const std::vector<in
 void CorrespondenceMaterial::storedEnergyDensity(const ModelState&, const std::vector<int>& points,
                                                  double* out) const {
   for (int i : points) {
+    if (rateForm()) {
+      out[i] = rateEnergyDensity(unrotated_ + 9 * i);
+      continue;
+    }
     const double* F = deformationGradient_ + 9 * i;
     double E[9];
     for (int r = 0; r < 3; ++r)
