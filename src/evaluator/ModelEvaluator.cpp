@@ -28,8 +28,9 @@ void ModelEvaluator::initialize() {
   state_.volume = fields_.node("Volume", 1);
   state_.horizon = fields_.node("Horizon", 1);
   state_.forceDensity = fields_.node("Force_Density", 3);
-  state_.velocity = fields_.node("Velocity", 3);
+  // Velocities only where some model reads them (a test scene without them allocates none).
   for (const auto& b : blocks_) velocityGhosts_ = velocityGhosts_ || b.material->needsVelocity();
+  if (velocityGhosts_ || fields_.hasNode("Velocity")) state_.velocity = fields_.node("Velocity", 3);
   state_.bondSides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
 
   // Compact damage (1-byte broken flags instead of a float per bond): only if the caller allows
