@@ -12,6 +12,7 @@
 #include <string>
 
 #include "SerialProblem.hpp"
+#include "core/Error.hpp"
 #include "materials/Correspondence.hpp"
 #include "materials/CorrespondenceRate.hpp"
 
@@ -265,6 +266,37 @@ TEST(ElasticPlasticCorrespondenceRate, UniaxialReturnMapping) {
   }
   EXPECT_GT(plastic, 20);
   EXPECT_NEAR(*tensorAt(pr, "Von_Mises_Stress", 1) / sigmaY, 1.0, 1e-9);
+}
+
+// The deck key: an unknown value is an input error naming both choices; the rate form reads
+// velocities and has history (so "Verlet Limit" refuses it), the Green strain form neither.
+TEST(ElasticCorrespondenceRate, StressIntegrationKey) {
+  Teuchos::ParameterList p;
+  p.set("Material Model", "Elastic Correspondence");
+  p.set("Density", 1.0);
+  p.set("Bulk Modulus", kK);
+  p.set("Shear Modulus", kG);
+  p.set("Hourglass Coefficient", 0.0);
+  p.set("Stress Integration", "Green");
+  try {
+    ListReader r(p, "Materials -> M");
+    createMaterial(r);
+    FAIL() << "an unknown Stress Integration was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Stress Integration"), std::string::npos) << what;
+    EXPECT_NE(what.find("Total Lagrangian Green Strain"), std::string::npos) << what;
+  }
+  auto rate = rateModel("Elastic Correspondence");
+  EXPECT_TRUE(rate->needsVelocity());
+  EXPECT_TRUE(rate->advancesHistory());
+  EXPECT_EQ(rate->historyNodeFields().size(), 3u);
+  p.set("Stress Integration", "Total Lagrangian Green Strain");
+  ListReader r(p, "Materials -> M");
+  auto green = createMaterial(r);
+  EXPECT_FALSE(green->needsVelocity());
+  EXPECT_FALSE(green->advancesHistory());
+  EXPECT_TRUE(green->historyNodeFields().empty());
 }
 
 }  // namespace
