@@ -82,20 +82,25 @@ double vonMises(const double* a) {
 
 namespace {
 
-// K (symmetric: 6 sums) and N over point i's bonds, one vectorisable pass; the options are
+// K (symmetric: 6 sums) and N over point i's bonds, and with kVelocity the velocity sums
+// M = sum_j w (v_j - v_i) (x) xi V_j of the rate form, in one vectorisable pass; the options are
 // compile-time so that the loop has no branch.
-template <bool kDamage, bool kSides, bool kInfluence>
-void shapeSums(const ModelState& s, int i, double* K, double* N) {
+template <bool kDamage, bool kSides, bool kInfluence, bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* x = s.x;
   const double* y = s.y;
+  const double* v = s.velocity;
   const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
   const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  double vi0 = 0, vi1 = 0, vi2 = 0;
+  if constexpr (kVelocity) vi0 = v[3 * i], vi1 = v[3 * i + 1], vi2 = v[3 * i + 2];
   double k00 = 0, k01 = 0, k02 = 0, k11 = 0, k12 = 0, k22 = 0;
   double n00 = 0, n01 = 0, n02 = 0, n10 = 0, n11 = 0, n12 = 0, n20 = 0, n21 = 0, n22 = 0;
+  double m00 = 0, m01 = 0, m02 = 0, m10 = 0, m11 = 0, m12 = 0, m20 = 0, m21 = 0, m22 = 0;
 #pragma omp simd reduction(+ : k00, k01, k02, k11, k12, k22, n00, n01, n02, n10, n11, n12, n20, \
-                               n21, n22)
+                               n21, n22, m00, m01, m02, m10, m11, m12, m20, m21, m22)
   for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
     const int j = neighbors[b];
     double w = s.volume[j];
@@ -120,31 +125,57 @@ void shapeSums(const ModelState& s, int i, double* K, double* N) {
     n20 += Y2 * w0;
     n21 += Y2 * w1;
     n22 += Y2 * w2;
+    if constexpr (kVelocity) {
+      const double V0 = v[3 * j] - vi0, V1 = v[3 * j + 1] - vi1, V2 = v[3 * j + 2] - vi2;
+      m00 += V0 * w0;
+      m01 += V0 * w1;
+      m02 += V0 * w2;
+      m10 += V1 * w0;
+      m11 += V1 * w1;
+      m12 += V1 * w2;
+      m20 += V2 * w0;
+      m21 += V2 * w1;
+      m22 += V2 * w2;
+    }
   }
   const double k[9] = {k00, k01, k02, k01, k11, k12, k02, k12, k22};
   const double n[9] = {n00, n01, n02, n10, n11, n12, n20, n21, n22};
   std::copy(k, k + 9, K);
   std::copy(n, n + 9, N);
+  if constexpr (kVelocity) {
+    const double m[9] = {m00, m01, m02, m10, m11, m12, m20, m21, m22};
+    std::copy(m, m + 9, M);
+  }
 }
 
-template <bool kDamage, bool kSides>
-void shapeSums(const ModelState& s, int i, double* K, double* N) {
+template <bool kDamage, bool kSides, bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M) {
   if (s.influence)
-    shapeSums<kDamage, kSides, true>(s, i, K, N);
+    shapeSums<kDamage, kSides, true, kVelocity>(s, i, K, N, M);
   else
-    shapeSums<kDamage, kSides, false>(s, i, K, N);
+    shapeSums<kDamage, kSides, false, kVelocity>(s, i, K, N, M);
+}
+
+template <bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M, bool damage) {
+  if (damage)
+    s.bondSides ? shapeSums<true, true, kVelocity>(s, i, K, N, M)
+                : shapeSums<true, false, kVelocity>(s, i, K, N, M);
+  else
+    s.bondSides ? shapeSums<false, true, kVelocity>(s, i, K, N, M)
+                : shapeSums<false, false, kVelocity>(s, i, K, N, M);
 }
 
 }  // namespace
 
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
-                                       bool useDamage) {
+                                       bool useDamage, double* velocitySums) {
   double K[9], N[9];
   const bool damage = useDamage && s.bondDamage;
-  if (damage)
-    s.bondSides ? shapeSums<true, true>(s, i, K, N) : shapeSums<true, false>(s, i, K, N);
+  if (velocitySums)
+    shapeSums<true>(s, i, K, N, velocitySums, damage);
   else
-    s.bondSides ? shapeSums<false, true>(s, i, K, N) : shapeSums<false, false>(s, i, K, N);
+    shapeSums<false>(s, i, K, N, nullptr, damage);
   if (!invert(K, Kinv)) {
     std::fill(F, F + 9, 0.0);
     return false;
@@ -297,7 +328,8 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
   for (int i : points) {
     double* Kinv = shapeTensorInverse_ + 9 * i;
     double* F = deformationGradient_ + 9 * i;
-    if (!shapeTensorAndDeformationGradient(s, i, Kinv, F)) {
+    double M[9];  // the rate form's velocity sums, from the same pass
+    if (!shapeTensorAndDeformationGradient(s, i, Kinv, F, true, rateForm() ? M : nullptr)) {
       // Zero force state and outputs, then stop the run on every rank (below).
       if (message.empty()) {
         char when[64];
@@ -313,7 +345,7 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
     }
     double P[9];
     if (rateForm()) {
-      if (!rateStress(s, i, F, Kinv, P) && message.empty()) {
+      if (!rateStress(s, i, F, Kinv, M, P) && message.empty()) {
         char what[160];
         std::snprintf(what, sizeof what,
                       " has an inverted or singular deformation gradient "
@@ -338,7 +370,7 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
 }
 
 bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double* F,
-                                        const double* Kinv, double* P) {
+                                        const double* Kinv, const double* M, double* P) {
   using namespace correspondence;
   double* L = velocityGradient_ + 9 * i;
   double* d = unrotatedRate_ + 9 * i;
@@ -347,7 +379,7 @@ bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double
   double* Vnew = leftStretchNew_.data() + 9 * i;
   double Finv[9];
   const double J = determinant(F);
-  if (!(J > 0) || !invert(F, Finv) || !velocityGradient(s, i, Kinv, F, L)) {
+  if (!(J > 0) || !invert(F, Finv)) {
     // Keep the history as it was; the run stops (the caller's collective error).
     std::fill(P, P + 9, 0.0);
     std::fill(L, L + 9, 0.0);
@@ -357,6 +389,7 @@ bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double
     std::copy(leftStretch_ + 9 * i, leftStretch_ + 9 * i + 9, Vnew);
     return false;
   }
+  velocityGradient(M, Kinv, Finv, L);
   flanaganTaylorStep(L, leftStretch_ + 9 * i, rotation_ + 9 * i, s.dt, Vnew, Rnew, d);
   unrotatedCauchyStress(i, d, s.dt, unrotated_ + 9 * i, sigmaNew);
   // sigma = R sigma_u R^T, P = J sigma F^-T

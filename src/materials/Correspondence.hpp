@@ -58,9 +58,10 @@ double vonMises(const double* a);
 // Shape tensor inverse and deformation gradient of point i from the current coordinates `y`
 // (one pass over its bonds, weights omega (1 - d) on its own side). Returns false when the shape
 // tensor is singular (Kinv and F are then zero). `useDamage` false ignores the bond damage
-// (Peridigm's Deformation_Gradient compute).
+// (Peridigm's Deformation_Gradient compute). With `velocitySums`, the same pass also sums
+// M = sum_j w (v_j - v_i) (x) xi V_j from `s.velocity` (the rate form's Fdot = M K^-1).
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
-                                       bool useDamage = true);
+                                       bool useDamage = true, double* velocitySums = nullptr);
 
 // "point <id> at (x, y, z) (N intact bonds of M)": the diagnostics' description of a point.
 std::string describePoint(const ModelState& s, int i);
@@ -160,7 +161,8 @@ class CorrespondenceMaterial : public MaterialModel {
   // P of owned point i: from the Green strain, or the rate form's step; false when the rate
   // form meets an inverted or singular F (P zero, `message` set).
   void greenStress(int i, const double* F, double* P);
-  bool rateStress(const ModelState& s, int i, const double* F, const double* Kinv, double* P);
+  bool rateStress(const ModelState& s, int i, const double* F, const double* Kinv, const double* M,
+                  double* P);
   template <bool kDamage, bool kSides, bool kInfluence>
   void forceLoop(const ModelState& state, const std::vector<int>& points);
   std::vector<double> hourglassConstant_;  // per overlap point: 18 c_hg K / (pi delta^4)

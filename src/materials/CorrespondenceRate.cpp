@@ -60,67 +60,10 @@ bool flanaganTaylorStep(const double* L, const double* Vn, const double* Rn, dou
   return regular;
 }
 
-namespace {
-
-// Fdot's first factor sum_j w (v_j - v_i) (x) xi V_j over point i's bonds, with the weights of
-// the shape tensor; the options are compile-time so that the loop has no branch.
-template <bool kDamage, bool kSides, bool kInfluence>
-void velocitySums(const ModelState& s, int i, double* N) {
-  const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* x = s.x;
-  const double* v = s.velocity;
-  const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
-  const double vi0 = v[3 * i], vi1 = v[3 * i + 1], vi2 = v[3 * i + 2];
-  double n00 = 0, n01 = 0, n02 = 0, n10 = 0, n11 = 0, n12 = 0, n20 = 0, n21 = 0, n22 = 0;
-#pragma omp simd reduction(+ : n00, n01, n02, n10, n11, n12, n20, n21, n22)
-  for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-    const int j = neighbors[b];
-    double w = s.volume[j];
-    if constexpr (kInfluence) w *= s.influence[b];
-    if constexpr (kDamage) w *= 1.0 - s.bondDamage[b];
-    if constexpr (kSides) w *= (s.bondSides[b] & 1);
-    const double w0 = w * (x[3 * j] - xi0), w1 = w * (x[3 * j + 1] - xi1),
-                 w2 = w * (x[3 * j + 2] - xi2);
-    const double V0 = v[3 * j] - vi0, V1 = v[3 * j + 1] - vi1, V2 = v[3 * j + 2] - vi2;
-    n00 += V0 * w0;
-    n01 += V0 * w1;
-    n02 += V0 * w2;
-    n10 += V1 * w0;
-    n11 += V1 * w1;
-    n12 += V1 * w2;
-    n20 += V2 * w0;
-    n21 += V2 * w1;
-    n22 += V2 * w2;
-  }
-  const double n[9] = {n00, n01, n02, n10, n11, n12, n20, n21, n22};
-  std::copy(n, n + 9, N);
-}
-
-template <bool kDamage, bool kSides>
-void velocitySums(const ModelState& s, int i, double* N) {
-  if (s.influence)
-    velocitySums<kDamage, kSides, true>(s, i, N);
-  else
-    velocitySums<kDamage, kSides, false>(s, i, N);
-}
-
-}  // namespace
-
-bool velocityGradient(const ModelState& s, int i, const double* Kinv, const double* F, double* L) {
-  double Finv[9];
-  if (!(determinant(F) > 0) || !invert(F, Finv)) {
-    std::fill(L, L + 9, 0.0);
-    return false;
-  }
-  double N[9], Fdot[9];
-  if (s.bondDamage)
-    s.bondSides ? velocitySums<true, true>(s, i, N) : velocitySums<true, false>(s, i, N);
-  else
-    s.bondSides ? velocitySums<false, true>(s, i, N) : velocitySums<false, false>(s, i, N);
-  multiply(N, Kinv, Fdot);
+void velocityGradient(const double* M, const double* Kinv, const double* Finv, double* L) {
+  double Fdot[9];
+  multiply(M, Kinv, Fdot);
   multiply(Fdot, Finv, L);
-  return true;
 }
 
 void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,

@@ -24,10 +24,10 @@ namespace correspondence {
 bool flanaganTaylorStep(const double* L, const double* Vn, const double* Rn, double dt,
                         double* Vnew, double* Rnew, double* d);
 
-// Velocity gradient L = Fdot F^-1 of point i from the node velocities `s.velocity` (ghosted),
-// with the weights of its shape tensor (omega (1 - d) on its own side), its K^-1 and its F.
-// False (L zero) when F is singular or inverted.
-bool velocityGradient(const ModelState& s, int i, const double* Kinv, const double* F, double* L);
+// Velocity gradient L = Fdot F^-1, Fdot = M K^-1, from the velocity sums M = sum_j w (v_j - v_i)
+// (x) xi V_j of a point (with the weights of its shape tensor; shapeTensorAndDeformationGradient
+// sums them in its pass), its K^-1 and F^-1.
+void velocityGradient(const double* M, const double* Kinv, const double* Finv, double* L);
 
 // The linear hypoelastic increment in the unrotated frame: sigma = sigmaN + dt (lambda tr(d) I +
 // 2 mu d).
