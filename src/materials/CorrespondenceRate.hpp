@@ -20,7 +20,7 @@ namespace correspondence {
 // d = Rnew^T D Rnew. The rotation is advanced by the exact exponential of the angular velocity
 // omega = w + (tr(V) I - V)^-1 z (w the vorticity vector of W, z_i = e_ikj D_jm V_mk), so Rnew
 // stays orthogonal to rounding and a constant spin is integrated exactly; V by forward Euler,
-// Vdot = L V - V Omega. False (outputs as if L = 0) when tr(V) I - V is singular.
+// Vdot = L V - V Omega. False when tr(V) I - V is singular (omega is then w alone).
 bool flanaganTaylorStep(const double* L, const double* Vn, const double* Rn, double dt,
                         double* Vnew, double* Rnew, double* d);
 

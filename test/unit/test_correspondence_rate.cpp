@@ -268,6 +268,24 @@ TEST(ElasticPlasticCorrespondenceRate, UniaxialReturnMapping) {
   EXPECT_NEAR(*tensorAt(pr, "Von_Mises_Stress", 1) / sigmaY, 1.0, 1e-9);
 }
 
+// An inverted point (det F < 0) has no F^-1 for L and P = J sigma F^-T: the run stops naming it,
+// as Peridigm's does, and no tensor holds a NaN.
+TEST(ElasticCorrespondenceRate, InvertedPointStopsTheRun) {
+  Problem pr(lattice(5), 1.75, rateModel("Elastic Correspondence"));
+  const double F[9] = {-1, 0, 0, 0, 1, 0, 0, 0, 1}, Fdot[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  try {
+    move(pr, F, Fdot, 0.1);
+    FAIL() << "an inverted deformation gradient must stop the run";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("inverted"), std::string::npos) << what;
+    EXPECT_NE(what.find("det F = -1"), std::string::npos) << what;
+  }
+  for (const char* name : {"Cauchy_Stress", "Velocity_Gradient", "Unrotated_Cauchy_Stress"})
+    for (int k = 0; k < 9 * pr.topology.numOwned; ++k)
+      ASSERT_TRUE(std::isfinite(pr.fields->node(name, 9)[k])) << name;
+}
+
 // The deck key: an unknown value is an input error naming both choices; the rate form reads
 // velocities and has history (so "Verlet Limit" refuses it), the Green strain form neither.
 TEST(ElasticCorrespondenceRate, StressIntegrationKey) {
