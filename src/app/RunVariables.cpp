@@ -7,6 +7,7 @@
 
 #include "deck/RunConfig.hpp"
 #include "materials/Correspondence.hpp"
+#include "neighbor/PartialVolume.hpp"
 
 namespace peridot {
 
@@ -126,6 +127,47 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
              name == "Velocity_Gradient" || name == "Unrotated_Rate_Of_Deformation") {
     // Maintained by the correspondence models (zero at the points of other blocks).
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
+  } else if (name == "Contact_Force") {
+    if (s_.contactForceDensity)
+      for (int i = 0; i < n; ++i)
+        for (int d = 0; d < 3; ++d) out[3 * i + d] = s_.contactForceDensity[3 * i + d] * volume_[i];
+  } else if (name == "Linear_Momentum") {
+    for (int i = 0; i < n; ++i) {
+      const double mass = (*s_.density)[i] * volume_[i];
+      for (int d = 0; d < 3; ++d) out[3 * i + d] = mass * v_[3 * i + d];
+    }
+  } else if (name == "Angular_Momentum") {
+    // Peridigm's convention: m v x y (the opposite sign of y x m v), y the current position.
+    for (int i = 0; i < n; ++i) {
+      const double mass = (*s_.density)[i] * volume_[i];
+      const double* v = v_ + 3 * i;
+      const double* r = y_ + 3 * i;
+      out[3 * i] = mass * (v[1] * r[2] - v[2] * r[1]);
+      out[3 * i + 1] = mass * (v[2] * r[0] - v[0] * r[2]);
+      out[3 * i + 2] = mass * (v[0] * r[1] - v[1] * r[0]);
+    }
+  } else if (name == "Neighborhood_Volume") {
+    // The volume of the point's family: its neighbours' volumes, each times the fraction of its
+    // cell inside the horizon under partial-volume quadrature (the volume the models integrate).
+    const ModelState& state = s_.evaluator->state();
+    const Topology& t = *s_.topology;
+    CellFractionCache fractions;
+    for (int i = 0; i < n; ++i) {
+      double total = 0;
+      for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
+        if (!t.ownSide(b)) continue;
+        const int j = t.neighbors[b];
+        double w = volume_[j];
+        if (state.partialVolumes) {
+          double xi[3];
+          for (int e = 0; e < 3; ++e) xi[e] = x_[3 * j + e] - x_[3 * i + e];
+          w *= fractions.fraction(xi, cellEdge(volume_[j], state.dimension, state.thickness),
+                                  state.horizon[i], state.dimension);
+        }
+        total += w;
+      }
+      out[i] = total;
+    }
   } else if (name == "Kinetic_Energy") {
     for (int i = 0; i < n; ++i) {
       const double v2 =
@@ -208,6 +250,18 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
   }
   if (name == "Global_Stored_Elastic_Energy" || name == "Global_Strain_Energy") {
     values.push_back(reduce(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
+    return;
+  }
+  if (name == "Global_Linear_Momentum" || name == "Global_Angular_Momentum") {
+    // Peridigm's definition: the magnitude of each block's total momentum, summed over blocks.
+    const std::string perPoint = name.substr(7);
+    double total = 0;
+    for (const auto& b : *s_.blocks) {
+      double v[3];
+      for (int d = 0; d < 3; ++d) v[d] = reduce(&b.points, perPoint, d, "Sum");
+      total += std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    values.push_back(total);
     return;
   }
   for (const auto& c : s_.config->computes) {

@@ -19,6 +19,7 @@
 #include "core/Format.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
+#include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
 #include "solvers/QuasiStatic.hpp"
 
@@ -408,8 +409,8 @@ void Simulation::prepareSolver() {
                          formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
   }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
-  if (s.quasiStatic || s.implicit) checkImplicit();
-  if (numSteps_ < 1 && !s.quasiStatic) {
+  if (!s.explicitVerlet()) checkImplicit();
+  if (numSteps_ < 1 && !s.loadStepped()) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
@@ -513,6 +514,7 @@ void Simulation::run() {
     time_ = config_.solver.initialTime;
     quasiStatic_.reset();
     implicit_.reset();
+    relaxation_.reset();
     prepareSolver();
     // Prescribed displacements continue from their values at the new initial time.
     conditions_->resume(time_);
@@ -525,7 +527,7 @@ void Simulation::run() {
 }
 
 void Simulation::runSolver() {
-  if (config_.solver.quasiStatic || config_.solver.implicit) {
+  if (!config_.solver.explicitVerlet()) {
     runImplicit();
     return;
   }

@@ -26,6 +26,7 @@
 namespace peridot {
 
 class QuasiStatic;
+class DynamicRelaxation;
 class Implicit;
 
 class Simulation {
@@ -68,6 +69,8 @@ class Simulation {
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
   QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
+  // The Adaptive Dynamic Relaxation solver of the last run() (null for the others).
+  DynamicRelaxation* dynamicRelaxation() { return relaxation_.get(); }
   // The Implicit (Newmark) solver of the last run() (null for the others).
   Implicit* implicit() { return implicit_.get(); }
 
@@ -126,6 +129,7 @@ class Simulation {
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
   std::unique_ptr<QuasiStatic> quasiStatic_;
+  std::unique_ptr<DynamicRelaxation> relaxation_;
   std::unique_ptr<Implicit> implicit_;
   double origin_ = 0;         // time of step 0: time at step n is origin_ + n * dt_
   long long firstStep_ = 1;   // the first step run() takes (after a checkpoint's step)

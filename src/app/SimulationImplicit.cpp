@@ -2,6 +2,7 @@
 // lives in src/solvers (the explicit Verlet loop stays in Simulation.cpp).
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
+#include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
 #include "solvers/QuasiStatic.hpp"
 
@@ -10,12 +11,13 @@ namespace peridot {
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
     throw InputError(config_.restart.path,
-                     "Restart with the QuasiStatic and Implicit solvers is not supported yet");
+                     "Restart with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+                     "solvers is not supported yet");
   }
   if (contact_) {
     throw InputError(config_.contact.path,
-                     "contact with the QuasiStatic and Implicit solvers is not supported (nor by "
-                     "Peridigm)");
+                     "contact with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+                     "solvers is not supported (nor by Peridigm)");
   }
   // The solver and its tangent are built here, so that a material without a tangent stops the
   // run before any output is written.
@@ -47,6 +49,9 @@ void Simulation::checkImplicit() {
   if (config_.solver.implicit) {
     implicit_ = std::make_unique<Implicit>(config_.solver.implicitConfig,
                                            config_.solver.initialTime, numSteps_, context);
+  } else if (config_.solver.dynamicRelaxation) {
+    relaxation_ =
+        std::make_unique<DynamicRelaxation>(config_.solver.dynamicRelaxationConfig, context);
   } else {
     quasiStatic_ = std::make_unique<QuasiStatic>(config_.solver.quasiStaticConfig, context);
   }
@@ -69,9 +74,15 @@ void Simulation::runImplicit() {
     time_ = config_.solver.initialTime + static_cast<double>(numSteps_) * dt_;
     return;
   }
-  quasiStatic_->setRunHooks(outputs_.get(), observer_);
-  quasiStatic_->run();
-  const auto& times = config_.solver.quasiStaticConfig.times;
+  if (relaxation_) {
+    relaxation_->setRunHooks(outputs_.get(), observer_);
+    relaxation_->run();
+  } else {
+    quasiStatic_->setRunHooks(outputs_.get(), observer_);
+    quasiStatic_->run();
+  }
+  const auto& times = relaxation_ ? config_.solver.dynamicRelaxationConfig.times
+                                  : config_.solver.quasiStaticConfig.times;
   lastStep_ = stepOffset_ + static_cast<long long>(times.size()) - 1;
   time_ = times.back();
 }

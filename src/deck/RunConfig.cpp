@@ -116,8 +116,8 @@ SolverConfig readSolver(ListReader s) {
   for (const char* other : {"NOXQuasiStatic", "ImplicitDiffusion"}) {
     if (s.isSublist(other)) {
       throw InputError(s.pathOf(other),
-                       "this solver is not supported by Peridot yet; use Verlet, QuasiStatic or "
-                       "Implicit");
+                       "this solver is not supported by Peridot yet; use Verlet, QuasiStatic, "
+                       "Implicit or Adaptive Dynamic Relaxation");
     }
   }
   const std::string preconditioner =
@@ -133,6 +133,23 @@ SolverConfig readSolver(ListReader s) {
                                            preconditioner, verbose);
     sc.initialTime = sc.quasiStaticConfig.times.front();
     sc.finalTime = sc.quasiStaticConfig.times.back();
+    s.finish();
+    return sc;
+  }
+  if (s.isSublist("Adaptive Dynamic Relaxation")) {
+    for (const char* other : {"Verlet", "QuasiStatic", "Implicit"}) {
+      if (s.has(other)) {
+        throw InputError(
+            s.pathOf(other),
+            "one solver list per Solver: Adaptive Dynamic Relaxation or " + std::string(other));
+      }
+    }
+    ListReader adr = s.sublist("Adaptive Dynamic Relaxation");
+    sc.dynamicRelaxation = true;
+    sc.dynamicRelaxationConfig =
+        readDynamicRelaxation(adr, sc.initialTime, sc.finalTime, s.has("Final Time"), verbose);
+    sc.initialTime = sc.dynamicRelaxationConfig.times.front();
+    sc.finalTime = sc.dynamicRelaxationConfig.times.back();
     s.finish();
     return sc;
   }
@@ -281,6 +298,18 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "unrotated rate of deformation d = R^T sym(L) R (correspondence models, rate form)"},
       {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
       {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
+      {"Contact_Force", 3, "Contact_Force_Density x volume"},
+      {"Neighborhood_Volume", 1,
+       "volume of the point's family: sum of its neighbours' volumes (times their cell "
+       "fraction inside the horizon under partial-volume quadrature)"},
+      {"Linear_Momentum", 3, "linear momentum of the point, rho V v"},
+      {"Angular_Momentum", 3,
+       "angular momentum of the point in Peridigm's convention, rho V v x y (y the current "
+       "position)"},
+      {"Global_Linear_Momentum", 0,
+       "|sum of Linear_Momentum| per block, summed over blocks (Peridigm's definition)"},
+      {"Global_Angular_Momentum", 0,
+       "|sum of Angular_Momentum| per block, summed over blocks (Peridigm's definition)"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},

@@ -12,6 +12,7 @@
 #include "damage/DamageModel.hpp"
 #include "discretization/Discretization.hpp"
 #include "materials/MaterialModel.hpp"
+#include "solvers/DynamicRelaxationConfig.hpp"
 #include "solvers/ImplicitConfig.hpp"
 #include "solvers/QuasiStaticConfig.hpp"
 
@@ -61,6 +62,12 @@ struct SolverConfig {
   QuasiStaticConfig quasiStaticConfig;
   bool implicit = false;  // an Implicit (Newmark) list instead of Verlet
   ImplicitConfig implicitConfig;
+  // An Adaptive Dynamic Relaxation list instead of Verlet (a Peridot extension).
+  bool dynamicRelaxation = false;
+  DynamicRelaxationConfig dynamicRelaxationConfig;
+  // Solvers that step through load steps rather than time steps of a fixed size.
+  bool loadStepped() const { return quasiStatic || dynamicRelaxation; }
+  bool explicitVerlet() const { return !quasiStatic && !implicit && !dynamicRelaxation; }
   // Initialize Predictor From Previous Solver: a chained QuasiStatic solver's first load step
   // starts from the velocity the previous solver left (times the step's duration).
   bool predictorFromPrevious = false;

@@ -317,9 +317,10 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   if (r.has("Compute Element-Horizon Intersections") &&
       r.boolean("Compute Element-Horizon Intersections", false)) {
     throw InputError(r.pathOf("Compute Element-Horizon Intersections"),
-                     "Peridot does not intersect the mesh's elements with the horizon; "
-                     "`Partial Volumes: true` intersects each point's cubic cell (edge V^(1/3)) "
-                     "with it, which is the same for a uniform axis-aligned grid");
+                     "not supported by Peridot yet (Peridot does not intersect the mesh's "
+                     "elements with the horizon; `Partial Volumes: true` intersects each "
+                     "point's cubic cell (edge V^(1/3)) with it, which is the same for a uniform "
+                     "axis-aligned grid)");
   }
   if (r.has("Construct Interfaces") && r.boolean("Construct Interfaces", false)) {
     throw InputError(r.pathOf("Construct Interfaces"), "not supported by Peridot yet");

@@ -176,6 +176,12 @@ bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv,
     shapeSums<true>(s, i, K, N, velocitySums, damage);
   else
     shapeSums<false>(s, i, K, N, nullptr, damage);
+  if (s.dimension == 2) {
+    // A planar run's bonds all lie in z = 0: K's z row and column are zero. A unit zz entry
+    // in K and N leaves the in-plane blocks as they are and gives the plane F_zz = 1.
+    K[8] = 1.0;
+    N[8] = 1.0;
+  }
   if (!invert(K, Kinv)) {
     std::fill(F, F + 9, 0.0);
     return false;

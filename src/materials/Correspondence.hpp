@@ -58,8 +58,9 @@ double vonMises(const double* a);
 // Shape tensor inverse and deformation gradient of point i from the current coordinates `y`
 // (one pass over its bonds, weights omega (1 - d) on its own side). Returns false when the shape
 // tensor is singular (Kinv and F are then zero). `useDamage` false ignores the bond damage
-// (Peridigm's Deformation_Gradient compute). With `velocitySums`, the same pass also sums
-// M = sum_j w (v_j - v_i) (x) xi V_j from `s.velocity` (the rate form's Fdot = M K^-1).
+// (Peridigm's Deformation_Gradient compute). In a planar run F is the in-plane F with F_zz = 1.
+// With `velocitySums`, the same pass also sums M = sum_j w (v_j - v_i) (x) xi V_j from
+// `s.velocity` (the rate form's Fdot = M K^-1).
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
                                        bool useDamage = true, double* velocitySums = nullptr);
 

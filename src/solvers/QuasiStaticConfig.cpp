@@ -7,6 +7,47 @@
 
 namespace peridot {
 
+std::vector<double> readLoadSteps(ListReader& list, double initialTime, double finalTime,
+                                  bool finalTimeGiven) {
+  std::vector<double> times;
+  if (list.has("Number of Load Steps") && list.has("Time Steps")) {
+    throw InputError(list.pathOf("Time Steps"),
+                     "give Number of Load Steps or Time Steps, not both");
+  }
+  if (list.has("Number of Load Steps")) {
+    if (!finalTimeGiven) {
+      throw InputError(list.pathOf("Number of Load Steps"),
+                       "needs the solver's Final Time (the load steps divide [Initial Time, Final "
+                       "Time])");
+    }
+    const long long n = list.integer("Number of Load Steps");
+    if (n < 1) throw InputError(list.pathOf("Number of Load Steps"), "must be at least 1");
+    times.push_back(initialTime);
+    for (long long k = 1; k <= n; ++k)
+      times.push_back(initialTime + k * (finalTime - initialTime) / static_cast<double>(n));
+  } else if (list.has("Time Steps")) {
+    std::istringstream in(list.string("Time Steps"));
+    double t;
+    while (in >> t) times.push_back(t);
+    if (!in.eof() || times.size() < 2) {
+      throw InputError(list.pathOf("Time Steps"),
+                       "expected a list of at least two increasing times separated by spaces");
+    }
+    for (std::size_t k = 1; k < times.size(); ++k) {
+      if (!(times[k] > times[k - 1])) {
+        throw InputError(list.pathOf("Time Steps"), "the times must increase (" +
+                                                        formatNumber(times[k - 1]) + " then " +
+                                                        formatNumber(times[k]) + ")");
+      }
+    }
+  } else {
+    throw InputError(list.path(),
+                     "give Number of Load Steps (with the solver's Final Time) or "
+                     "Time Steps");
+  }
+  return times;
+}
+
 QuasiStaticConfig readQuasiStatic(ListReader& qs, double initialTime, double finalTime,
                                   bool finalTimeGiven, const std::string& preconditioner,
                                   bool verbose) {
@@ -14,40 +55,7 @@ QuasiStaticConfig readQuasiStatic(ListReader& qs, double initialTime, double fin
   c.path = qs.path();
   c.verbose = verbose;
   c.preconditioner = preconditioner;
-  if (qs.has("Number of Load Steps") && qs.has("Time Steps")) {
-    throw InputError(qs.pathOf("Time Steps"), "give Number of Load Steps or Time Steps, not both");
-  }
-  if (qs.has("Number of Load Steps")) {
-    if (!finalTimeGiven) {
-      throw InputError(qs.pathOf("Number of Load Steps"),
-                       "needs the solver's Final Time (the load steps divide [Initial Time, Final "
-                       "Time])");
-    }
-    const long long n = qs.integer("Number of Load Steps");
-    if (n < 1) throw InputError(qs.pathOf("Number of Load Steps"), "must be at least 1");
-    c.times.push_back(initialTime);
-    for (long long k = 1; k <= n; ++k)
-      c.times.push_back(initialTime + k * (finalTime - initialTime) / static_cast<double>(n));
-  } else if (qs.has("Time Steps")) {
-    std::istringstream in(qs.string("Time Steps"));
-    double t;
-    while (in >> t) c.times.push_back(t);
-    if (!in.eof() || c.times.size() < 2) {
-      throw InputError(qs.pathOf("Time Steps"),
-                       "expected a list of at least two increasing times separated by spaces");
-    }
-    for (std::size_t k = 1; k < c.times.size(); ++k) {
-      if (!(c.times[k] > c.times[k - 1])) {
-        throw InputError(qs.pathOf("Time Steps"), "the times must increase (" +
-                                                      formatNumber(c.times[k - 1]) + " then " +
-                                                      formatNumber(c.times[k]) + ")");
-      }
-    }
-  } else {
-    throw InputError(qs.path(),
-                     "give Number of Load Steps (with the solver's Final Time) or "
-                     "Time Steps");
-  }
+  c.times = readLoadSteps(qs, initialTime, finalTime, finalTimeGiven);
   if (qs.has("Absolute Tolerance")) {
     c.absoluteTolerance = true;
     c.tolerance = qs.positiveNumber("Absolute Tolerance");

@@ -24,6 +24,11 @@ struct QuasiStaticConfig {
   bool verbose = false;
 };
 
+// The times at which load steps end, the first being the initial time, from `Number of Load
+// Steps` (spread evenly over [Initial Time, Final Time]) or `Time Steps` (listed) of `list`.
+std::vector<double> readLoadSteps(ListReader& list, double initialTime, double finalTime,
+                                  bool finalTimeGiven);
+
 // `solver` is the Solver list (Initial/Final Time and Peridigm Preconditioner live there),
 // `qs` its QuasiStatic sub-list.
 QuasiStaticConfig readQuasiStatic(ListReader& qs, double initialTime, double finalTime,

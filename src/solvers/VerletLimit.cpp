@@ -7,29 +7,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "parallel/ExactSum.hpp"
+
 namespace peridot {
 
 namespace {
-
-// Sum over all ranks of per-point terms, exactly and in any order: each term is rounded to a
-// multiple of 2^-s, chosen from the largest term and the number of terms so that the int64 sum
-// cannot overflow, and the integers are summed. The rounding loses ~2^-(62 - log2 N) of the
-// largest term: far below what the eigenvalue estimate needs, and the same bits on any rank count.
-double exactSum(const std::vector<double>& terms, long long globalCount, MPI_Comm comm) {
-  double largest = 0;
-  for (double t : terms) largest = std::max(largest, std::fabs(t));
-  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, comm);
-  if (largest == 0) return 0.0;
-  int countBits = 0;
-  while ((1LL << countBits) <= globalCount && countBits < 40) ++countBits;
-  int exponent = 0;
-  std::frexp(largest, &exponent);                 // largest < 2^exponent
-  const int scale = (61 - countBits) - exponent;  // terms < 2^(61 - countBits) once scaled
-  long long sum = 0;
-  for (double t : terms) sum += std::llround(std::ldexp(t, scale));
-  MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_LONG_LONG, MPI_SUM, comm);
-  return std::ldexp(static_cast<double>(sum), -scale);
-}
 
 // A deterministic start vector: a hash of the global id and component, the same on any rank count.
 double startValue(long long globalId, int d) {

@@ -149,3 +149,81 @@ TEST(Computes, TractionGivesSigmaTimesAreaInTotal) {
 
 }  // namespace
 }  // namespace peridot
+
+namespace peridot {
+namespace {
+
+TEST(Computes, MomentaAndNeighborhoodVolumeByHand) {
+  // At t = 0 only the corner set moves: v = (0, x + 10 z, 0) at (0.5,0.5,0.5), (1.5,0.5,0.5),
+  // (0.5,1.5,0.5), (3.5,3.5,3.5), so v_y = 5.5, 6.5, 5.5, 38.5; mass = density 2 x volume 1.
+  auto sim = build(
+      "",
+      compute("NeighbourhoodMax", "Block_Data", "Maximum", "block_1", "Neighborhood_Volume") +
+          compute("NeighbourhoodMin", "Block_Data", "Minimum", "block_1", "Neighborhood_Volume") +
+          compute("P", "Block_Data", "Sum", "block_1", "Linear_Momentum") +
+          compute("L", "Block_Data", "Sum", "block_1", "Angular_Momentum"));
+  std::vector<double> g;
+  sim->variables().globalVariable("P", g);
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_DOUBLE_EQ(g[0], 0.0);
+  EXPECT_DOUBLE_EQ(g[1], 2.0 * (5.5 + 6.5 + 5.5 + 38.5));
+  EXPECT_DOUBLE_EQ(g[2], 0.0);
+  sim->variables().globalVariable("Global_Linear_Momentum", g);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_DOUBLE_EQ(g[0], 112.0);
+  // m v x y with v = (0, v_y, 0): (v_y z, 0, -v_y x) per point.
+  const double Lx = 2.0 * (5.5 * 0.5 + 6.5 * 0.5 + 5.5 * 0.5 + 38.5 * 3.5);
+  const double Lz = -2.0 * (5.5 * 0.5 + 6.5 * 1.5 + 5.5 * 0.5 + 38.5 * 3.5);
+  sim->variables().globalVariable("L", g);
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_DOUBLE_EQ(g[0], Lx);
+  EXPECT_DOUBLE_EQ(g[1], 0.0);
+  EXPECT_DOUBLE_EQ(g[2], Lz);
+  sim->variables().globalVariable("Global_Angular_Momentum", g);
+  EXPECT_NEAR(g[0], std::sqrt(Lx * Lx + Lz * Lz), 1e-12 * std::abs(Lz));
+  // Unit volumes: the family volume is the neighbour count, 29 at best (see above), and at a
+  // corner of the 4^3 grid, offsets 0..2 per axis with 0 < |xi|^2 <= 4.41: 3 at 1, 3 at 2, 1 at
+  // 3 and 3 at 4, 10 in all.
+  sim->variables().globalVariable("NeighbourhoodMax", g);
+  EXPECT_DOUBLE_EQ(g[0], 29.0);
+  sim->variables().globalVariable("NeighbourhoodMin", g);
+  EXPECT_DOUBLE_EQ(g[0], 10.0);
+}
+
+TEST(Computes, ContactForceFollowsTheShortRangeLaw) {
+  // Four points 1 apart on a line, horizon 0.5 (no bonds), contact radius 1.2: each neighbouring
+  // pair pushes apart with 18 k (r_c - r) / (pi delta^5) V (force density), times V for the
+  // force. One step of 1e-9 moves the points by ~1e-16: r stays 1 to round-off.
+  const std::string deck =
+      "Peridigm:\n"
+      "  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
+      "    TensorProduct3DMeshGenerator:\n"
+      "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
+      "      X Length: 4.0\n      Y Length: 1.0\n      Z Length: 1.0\n"
+      "      Number Points X: 4\n      Number Points Y: 1\n      Number Points Z: 1\n"
+      "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 2.0\n"
+      "      Bulk Modulus: 5.0\n      Shear Modulus: 3.0\n"
+      "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 0.5\n"
+      "  Contact:\n    Search Radius: 1.5\n    Search Frequency: 1\n"
+      "    Models:\n      C:\n        Contact Model: Short Range Force\n"
+      "        Contact Radius: 1.2\n        Spring Constant: 3.0\n"
+      "    Interactions:\n      General Contact:\n        Contact Model: C\n"
+      "  Solver:\n    Final Time: 1.0e-9\n    Verlet:\n      Fixed dt: 1.0e-9\n";
+  Simulation sim(readRunConfig(*parseDeck(deck, "yaml")), MPI_COMM_WORLD, quiet);
+  sim.run();
+  const double pi = std::acos(-1.0);
+  const double pair = 18.0 * 3.0 * (1.2 - 1.0) / (pi * std::pow(0.5, 5));
+  std::vector<double> f, x;
+  sim.variables().nodeVariable("Contact_Force", f);
+  sim.variables().nodeVariable("Model_Coordinates", x);
+  for (std::size_t i = 0; i < x.size() / 3; ++i) {
+    // The end points are pushed outwards, the inner ones equally both ways.
+    const double expected = x[3 * i] == 0.5 ? -pair : x[3 * i] == 3.5 ? pair : 0.0;
+    EXPECT_NEAR(f[3 * i], expected, 1e-9 * pair) << "point at x = " << x[3 * i];
+    EXPECT_EQ(f[3 * i + 1], 0.0);
+    EXPECT_EQ(f[3 * i + 2], 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace peridot

@@ -309,6 +309,40 @@ TEST(Planar, RunIsIdenticalToTheSerialRunAndWritesA2DFile) {
   }
 }
 
+TEST(Planar, DeformationGradientIsTheInPlaneGradient) {
+  // An affine in-plane displacement u = (0.01 x + 0.02 y, 0.03 x - 0.01 y): F = N K^-1 is exact
+  // at every point (also at the edges), in-plane I + grad u, and F_zz = 1 (the plane's K has no
+  // z row to invert).
+  std::string deck = plateDeck("peridot_planar_never_written", "Test Plane Stress Spring");
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    deck.replace(at, from.size(), to);
+  };
+  replace("Type: Initial Velocity", "Type: Initial Displacement");
+  replace("Type: Initial Velocity", "Type: Initial Displacement");
+  replace("\"0.01 * x * (1 + 0.1 * y)\"", "\"0.01 * x + 0.02 * y\"");
+  replace("\"0.003 * x * x - 0.002 * y\"", "\"0.03 * x - 0.01 * y\"");
+  replace("Coordinate: x\n      Value: \"0.0\"",
+          "Coordinate: x\n      Value: \"0.01 * x + 0.02 * y\"");
+  // One step with a density so large that the edges' unbalanced forces move nothing: the
+  // current positions are then x + u.
+  replace("Density: 1.0\n", "Density: 1.0e30\n");
+  replace("Final Time: 20.0", "Final Time: 0.5");
+  deck = deck.substr(0, deck.find("  Output:\n"));  // no output file
+  auto sim = makeSimulation(deck, MPI_COMM_WORLD);
+  sim->run();
+  std::vector<double> F;
+  sim->variables().nodeVariable("Deformation_Gradient", F);
+  const double expected[9] = {1.01, 0.02, 0.0, 0.03, 0.99, 0.0, 0.0, 0.0, 1.0};
+  for (std::size_t i = 0; i < F.size() / 9; ++i)
+    for (int k = 0; k < 9; ++k)
+      EXPECT_NEAR(F[9 * i + k], expected[k], 1e-12) << "point " << i << " component " << k;
+  int owned = static_cast<int>(F.size() / 9), total = 0;
+  MPI_Allreduce(&owned, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, 96);
+}
+
 TEST(Planar, MaterialsMustMatchTheDimension) {
   const std::string file =
       (std::filesystem::temp_directory_path() / "peridot_planar_never_written").string();

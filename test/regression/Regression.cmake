@@ -115,3 +115,6 @@ add_test(NAME ranks_ImplicitChainBar
     -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
 set_tests_properties(ranks_ImplicitChainBar PROPERTIES
   ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# Adaptive dynamic relaxation with bonds breaking (exact global sums): bitwise equal at 1-4 ranks.
+peridot_identical(RelaxationBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/RelaxationBar
+                  RelaxationBar.yaml RelaxationBar.e exact.comp 0)
