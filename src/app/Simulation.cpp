@@ -57,6 +57,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   thickness_ = cloud.thickness;
   planar_ = cloud.dimension == 2;
   checkDimension();
+  checkPeriodicBox();
   // Blocks of the mesh -> block groups of the deck, and each point's horizon.
   std::map<int, int> groupOfBlock;  // mesh block id -> index in config_.blocks
   std::map<std::string, int> blockIdOfName;
@@ -278,15 +279,6 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   evaluator_->setCompactDamageAllowed(compact && !config_.restart.enabled &&
                                       !config_.solver.quasiStatic);
   evaluator_->initialize();
-  // Periodic images copy their point's velocity; in a deforming box an image also moves with the
-  // box (Fdot s), which the copy lacks: refuse the models that read velocities there.
-  for (const auto& b : blocks_)
-    if (!boxDeformation_.empty() && b.material->needsVelocity())
-      throw InputError(config_.discretization.periodic.deformationPath,
-                       "the material of block " + b.name +
-                           " reads node velocities (the correspondence rate form), and the "
-                           "periodic images of a deforming box do not carry the box's rate yet; "
-                           "use \"Stress Integration: Total Lagrangian Green Strain\"");
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();
 
