@@ -120,11 +120,12 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
         correspondence::shapeTensorAndDeformationGradient(state, i, Kinv, out.data() + 9 * i,
                                                           false);
     }
-  } else if (name == "Shape_Tensor_Inverse" || name == "Cauchy_Stress" ||
-             name == "Unrotated_Cauchy_Stress" || name == "Von_Mises_Stress" ||
-             name == "Hourglass_Force_Density" || name == "Equivalent_Plastic_Strain" ||
-             name == "Rotation_Tensor" || name == "Left_Stretch_Tensor" ||
-             name == "Velocity_Gradient" || name == "Unrotated_Rate_Of_Deformation") {
+  } else if (name == "Partial_Stress" || name == "Shape_Tensor_Inverse" ||
+             name == "Cauchy_Stress" || name == "Unrotated_Cauchy_Stress" ||
+             name == "Von_Mises_Stress" || name == "Hourglass_Force_Density" ||
+             name == "Equivalent_Plastic_Strain" || name == "Rotation_Tensor" ||
+             name == "Left_Stretch_Tensor" || name == "Velocity_Gradient" ||
+             name == "Unrotated_Rate_Of_Deformation") {
     // Maintained by the correspondence models (zero at the points of other blocks).
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
   } else if (name == "Contact_Force") {
@@ -250,6 +251,10 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
   }
   if (name == "Global_Stored_Elastic_Energy" || name == "Global_Strain_Energy") {
     values.push_back(reduce(nullptr, "Stored_Elastic_Energy", 0, "Sum"));
+    return;
+  }
+  if (name == "Nonlinear_Solver_Iterations") {
+    values.push_back(s_.nonlinearIterations ? static_cast<double>(*s_.nonlinearIterations) : 0.0);
     return;
   }
   if (name == "Global_Linear_Momentum" || name == "Global_Angular_Momentum") {

@@ -32,6 +32,8 @@ class RunVariables : public VariableSource {
     // Optional fields: null when the run has no body force / no contact.
     const double* externalForceDensity = nullptr;
     const double* contactForceDensity = nullptr;
+    // The implicit solvers' nonlinear iterations of their last step (null: 0).
+    const long long* nonlinearIterations = nullptr;
   };
   explicit RunVariables(const Sources& sources);
 

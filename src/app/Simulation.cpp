@@ -357,6 +357,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   sources.blockIndexOfPoint = &blockIndexOfPoint_;
   sources.externalForceDensity = b_;
   sources.contactForceDensity = fc_;
+  sources.nonlinearIterations = &nonlinearIterations_;
   variables_ = std::make_unique<RunVariables>(sources);
 
   // Initial conditions now, so that a bad value stops the run before any file is written.

@@ -134,9 +134,11 @@ class Simulation {
   std::unique_ptr<QuasiStatic> quasiStatic_;
   std::unique_ptr<DynamicRelaxation> relaxation_;
   std::unique_ptr<Implicit> implicit_;
-  double origin_ = 0;         // time of step 0: time at step n is origin_ + n * dt_
-  long long firstStep_ = 1;   // the first step run() takes (after a checkpoint's step)
-  long long lastStep_ = 0;    // the last step completed
+  double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_
+  long long firstStep_ = 1;  // the first step run() takes (after a checkpoint's step)
+  long long lastStep_ = 0;   // the last step completed
+  // The implicit solvers' nonlinear iterations of their last step (0 under Verlet).
+  long long nonlinearIterations_ = 0;
   long long stepOffset_ = 0;  // chained solvers: the steps of the solvers before this one
   bool resumed_ = false, stopped_ = false;
   int stopSignal_ = 0;

@@ -120,6 +120,11 @@ void Simulation::checkVariables() {
                                  "Correspondence\"" +
                                  (v == "Equivalent_Plastic_Strain" ? ", a plastic one)" : ")"));
     }
+    if (v == "Partial_Stress" && !modelFields.count(v)) {
+      throw InputError(path,
+                       "\"Partial_Stress\" needs an \"Elastic\" material with \"Compute "
+                       "Partial Stress: true\"");
+    }
     if (v == "Lambda" && !modelFields.count(v)) {
       throw InputError(path,
                        "\"Lambda\" needs an elastic-plastic material (e.g. \"Elastic "

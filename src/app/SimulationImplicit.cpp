@@ -45,6 +45,7 @@ void Simulation::checkImplicit() {
   context.temperature = temperature_;
   context.temperatureChange = temperatureChange_;
   context.stepOffset = stepOffset_;
+  context.nonlinearIterations = &nonlinearIterations_;
   context.predictorFromPrevious = stepOffset_ > 0 && config_.solver.predictorFromPrevious;
   if (config_.solver.implicit) {
     implicit_ = std::make_unique<Implicit>(config_.solver.implicitConfig,

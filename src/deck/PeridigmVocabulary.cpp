@@ -43,7 +43,6 @@ const std::vector<std::string>& peridigmDamageModels() {
 
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
-      "Partial_Stress",
       "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
       "Jacobian_Determinant",
       "Surface_Correction_Factor",
@@ -51,7 +50,6 @@ const std::vector<std::string>& peridigmOutputVariablesNotYet() {
       "Flux_Divergence",
       "Fluid_Pressure_U",
       "Flux_Density",
-      "Nonlinear_Solver_Iterations",
       "OBC_Functional",
       "JIntegral",
       "Bond_Visualization",

@@ -284,6 +284,9 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Deformation_GradientZX", 1, "component ZX of Deformation_Gradient"},
       {"Deformation_GradientZY", 1, "component ZY of Deformation_Gradient"},
       {"Deformation_GradientZZ", 1, "component ZZ of Deformation_Gradient"},
+      {"Partial_Stress", 9,
+       "Peridigm's partial stress of an \"Elastic\" block with Compute Partial Stress: sum of "
+       "the point's own pair forces (x) xi V_j"},
       {"Shape_Tensor_Inverse", 9, "inverse of the shape tensor K (correspondence models)"},
       {"Cauchy_Stress", 9, "Cauchy stress (correspondence models)"},
       {"Unrotated_Cauchy_Stress", 9,
@@ -310,6 +313,9 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "|sum of Linear_Momentum| per block, summed over blocks (Peridigm's definition)"},
       {"Global_Angular_Momentum", 0,
        "|sum of Angular_Momentum| per block, summed over blocks (Peridigm's definition)"},
+      {"Nonlinear_Solver_Iterations", 0,
+       "nonlinear iterations of the last step: Newton (QuasiStatic, Implicit), relaxation "
+       "(Adaptive Dynamic Relaxation); 0 under Verlet (global variable)"},
       {"Kinetic_Energy", 1, "kinetic energy of the point, 1/2 rho V |v|^2"},
       {"Stored_Elastic_Energy", 1, "stored elastic energy of the point (density x volume)"},
       {"Stored_Elastic_Energy_Density", 1, "stored elastic energy density"},

@@ -48,7 +48,8 @@ Elastic::Elastic(ListReader& p) {
   } else {
     dilatationModulus_ = constants_.bulkModulus;
   }
-  acceptCommonMaterialKeys(p, true, true);
+  partialStress_ = p.boolean("Compute Partial Stress", false);
+  acceptCommonMaterialKeys(p, true, true, true);
 }
 
 void Elastic::declareFields(FieldManager& fields) {
@@ -57,6 +58,7 @@ void Elastic::declareFields(FieldManager& fields) {
   bulk_ = fields.node(kBulkModulus, 1);
   alpha_ = fields.node(kAlpha, 1);
   beta_ = fields.node(kBeta, 1);
+  if (partialStress_) partialStressField_ = fields.node(kPartialStress, 9);
 }
 
 void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
@@ -138,6 +140,41 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
     else
       forceLoop<false, O::influence, O::damage, O::sides, false>(s, points);
   });
+  if (partialStress_) partialStressLoop(s, points);
+}
+
+// Peridigm's partial stress: sum over the point's own bonds of its own force state's pair force
+// t_i Y/|Y| times the reference bond xi and the neighbour's volume (row: force component, column:
+// xi component). Only the point's own half of each bond force enters, as in Peridigm. A separate
+// pass, off the force loop: a run pays for it only when it asks.
+void Elastic::partialStressLoop(const ModelState& s, const std::vector<int>& points) const {
+  const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
+  for (int i : points) {
+    double P[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    const double thetaBetaI = dilatation_[i] * beta_[i], alphaI = alpha_[i];
+    const double strainI = s.thermalStrain ? s.thermalStrain[i] : 0.0;
+    for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
+      if (s.bondSides && !(s.bondSides[b] & 1)) continue;
+      const int j = s.topology->neighbors[b];
+      const Bond g = bondGeometry(s.x, s.y, i, j);
+      if (!(g.dY > 0)) continue;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double intact = intactFraction(s, b);
+      double t;
+      if (smooth) {
+        t = intact * omega * g.zeta *
+            (thetaBetaI + alphaI * s.bondLaw.forceScalar((g.dY - g.zeta) / g.zeta));
+      } else {
+        const double e = g.dY - g.zeta - strainI * g.zeta;
+        t = intact * (omega * thetaBetaI * g.zeta + intact * omega * alphaI * e);
+      }
+      const double scale = t / g.dY * s.volume[j];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          P[3 * r + c] += scale * g.Y[r] * (s.x[3 * j + c] - s.x[3 * i + c]);
+    }
+    std::copy(P, P + 9, partialStressField_ + 9 * static_cast<std::size_t>(i));
+  }
 }
 
 // kSmooth: LPS-T (paper 001 eq. 15), t = (1 - d) omega zeta (beta theta + alpha F(s)), with the
@@ -370,7 +407,9 @@ PERIDOT_REGISTER_MATERIAL(
          "number, default 0: alpha; with a Prescribed Temperature every bond's extension is taken "
          "less alpha Delta T |xi| (Delta T of the end whose force state it is), in the "
          "dilatation and the force, as Peridigm"},
-        {"Compute Partial Stress", "bool, default false: true is not supported yet"},
+        {"Compute Partial Stress",
+         "bool, default false: true maintains Peridigm's partial stress, sum over the point's "
+         "bonds of its own pair force t Y/|Y| (x) xi V_j, as the output Partial_Stress"},
         {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
 
 }  // namespace peridot

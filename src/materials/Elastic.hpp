@@ -32,7 +32,10 @@ class Elastic : public MaterialModel {
                     TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
-  std::vector<std::string> outputFields() const override { return {kWeightedVolume, kDilatation}; }
+  std::vector<std::string> outputFields() const override {
+    if (partialStress_) return {kWeightedVolume, kDilatation, kPartialStress};
+    return {kWeightedVolume, kDilatation};
+  }
   std::string family() const override { return "LPS"; }
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
 
@@ -42,6 +45,8 @@ class Elastic : public MaterialModel {
   // Per-point constants of the force state: alpha = 15 G / m, beta = 3 K / m - alpha / 3.
   static constexpr const char* kAlpha = "LPS_Alpha";
   static constexpr const char* kBeta = "LPS_Beta";
+  // Compute Partial Stress: Peridigm's partial stress tensor per point (9, row-major).
+  static constexpr const char* kPartialStress = "Partial_Stress";
 
  private:
   // The bond loops, instantiated per option (influence array, bond damage, one-sided bonds,
@@ -52,6 +57,7 @@ class Elastic : public MaterialModel {
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
   template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides, bool kThermal>
   void forceLoop(const ModelState& state, const std::vector<int>& points) const;
+  void partialStressLoop(const ModelState& state, const std::vector<int>& points) const;
   void smoothEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const;
   PlaneMode mode_ = PlaneMode::ThreeD;
@@ -67,6 +73,8 @@ class Elastic : public MaterialModel {
   double* bulk_ = nullptr;  // per point (the dilatation modulus), each end's constants
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
+  bool partialStress_ = false;
+  double* partialStressField_ = nullptr;
 };
 
 }  // namespace peridot

@@ -200,7 +200,8 @@ ElasticConstants readTwoElasticConstants(ListReader& p) {
   return c;
 }
 
-void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection, bool hasThermalExpansion) {
+void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection, bool hasThermalExpansion,
+                              bool hasPartialStress) {
   p.positiveNumber("Finite Difference Probe Length", 1.0);
   p.boolean("Verbose", false);
   // Peridigm's implicit-solver options do not change explicit dynamics.
@@ -216,8 +217,10 @@ void acceptCommonMaterialKeys(ListReader& p, bool hasShearCorrection, bool hasTh
                      "thermal strains are not supported by this material model yet (they are by "
                      "\"Elastic\" and \"Elastic Bond Based\")");
   }
-  if (p.has("Compute Partial Stress") && p.boolean("Compute Partial Stress", false)) {
-    throw InputError(p.pathOf("Compute Partial Stress"), "not supported by Peridot yet");
+  if (!hasPartialStress && p.has("Compute Partial Stress") &&
+      p.boolean("Compute Partial Stress", false)) {
+    throw InputError(p.pathOf("Compute Partial Stress"),
+                     "not supported by Peridot yet for this material (it is by \"Elastic\")");
   }
 }
 

@@ -250,9 +250,10 @@ bool influenceIntegral(const std::string& influenceFunction, int k, double delta
 
 // Keys every material accepts and ignores or checks (Peridigm compatibility).
 // `hasThermalExpansion`: the model reads `Thermal Expansion Coefficient` itself; otherwise a
-// non-zero value is refused as not supported.
+// non-zero value is refused as not supported. `hasPartialStress`: the model reads `Compute
+// Partial Stress` itself; otherwise true is refused.
 void acceptCommonMaterialKeys(ListReader& params, bool hasShearCorrection = false,
-                              bool hasThermalExpansion = false);
+                              bool hasThermalExpansion = false, bool hasPartialStress = false);
 
 }  // namespace peridot
 

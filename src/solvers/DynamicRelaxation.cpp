@@ -271,6 +271,7 @@ void DynamicRelaxation::run() {
       log << ", residual " << lastNorm_ << " <= " << lastCriterion_ << ", " << seconds << " s\n"
           << std::flush;
     }
+    if (c_.nonlinearIterations) *c_.nonlinearIterations = iterations;
     const long long record = c_.stepOffset + static_cast<long long>(step);
     if (c_.outputs->due(record)) c_.outputs->write(record, time);
     if (c_.observer) c_.observer(record, time);

@@ -174,6 +174,7 @@ void Implicit::run() {
     if (c_.rank == 0 && config_.verbose)
       log << "  step " << step << ", time " << time << ": residual = " << norm << " (" << iteration
           << " Newton iterations)\n";
+    if (c_.nonlinearIterations) *c_.nonlinearIterations = iteration;
     const long long record = c_.stepOffset + step;
     if (c_.outputs->due(record)) c_.outputs->write(record, time);
     if (c_.observer) c_.observer(record, time);

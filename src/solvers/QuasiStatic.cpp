@@ -277,6 +277,7 @@ void QuasiStatic::run() {
           << " Newton, " << linearThisStep << " linear iterations, " << seconds << " s)\n"
           << std::flush;
     }
+    if (c_.nonlinearIterations) *c_.nonlinearIterations = iteration - 1;
     const long long record = c_.stepOffset + static_cast<long long>(step);
     if (c_.outputs->due(record)) c_.outputs->write(record, time);
     if (c_.observer) c_.observer(record, time);

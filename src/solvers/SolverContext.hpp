@@ -45,6 +45,9 @@ struct SolverContext {
   // predictor when predictorFromPrevious is set (QuasiStatic).
   long long stepOffset = 0;
   bool predictorFromPrevious = false;
+  // Where the solver records the nonlinear iterations of its last step before writing outputs
+  // (Peridigm's Nonlinear_Solver_Iterations); may be null.
+  long long* nonlinearIterations = nullptr;
 };
 
 }  // namespace peridot

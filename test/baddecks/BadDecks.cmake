@@ -359,3 +359,5 @@ set_tests_properties(cli_version PROPERTIES LABELS baddeck
   PASS_REGULAR_EXPRESSION "peridot [0-9.]+\ncommit: [^\n]+\nbuild type: [A-Za-z]+")
 peridot_baddeck(output_label_too_long DECK output_label_too_long.yaml
   EXPECT [[Output -> Output Variables -> Left_Force_Of_The_Notched_Specimen_Sum: the name is 38 characters long; an Exodus variable name holds at most 32]])
+peridot_baddeck(partial_stress_without_flag DECK partial_stress_without_flag.yaml
+  EXPECT [[Output -> Output Variables -> Partial_Stress: "Partial_Stress" needs an "Elastic" material with "Compute Partial Stress: true"]])

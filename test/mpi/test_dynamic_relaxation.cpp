@@ -133,6 +133,10 @@ TEST(DynamicRelaxation, MatchesQuasiStaticIn3DAnd2D) {
     EXPECT_GT(stats.iterationsPerStep[0], 10);
     EXPECT_EQ(stats.relaxationsPerStep[0], 1);
     EXPECT_GT(stats.lambdaMax, 0.0);
+    std::vector<double> g;
+    relaxed->variables().globalVariable("Nonlinear_Solver_Iterations", g);
+    ASSERT_EQ(g.size(), 1u);
+    EXPECT_EQ(g[0], static_cast<double>(stats.iterationsPerStep[1]));
   }
 }
 

@@ -175,6 +175,11 @@ TEST(QuasiStatic, SmallDisplacementConvergesInOneNewtonStep) {
     const auto& stats = sim->quasiStatic()->statistics();
     ASSERT_EQ(stats.newtonIterationsPerStep.size(), 1u);
     EXPECT_EQ(stats.newtonIterationsPerStep[0], 1) << preconditioner;
+    // Peridigm's Nonlinear_Solver_Iterations global: the last load step's Newton iterations.
+    std::vector<double> g;
+    sim->variables().globalVariable("Nonlinear_Solver_Iterations", g);
+    ASSERT_EQ(g.size(), 1u);
+    EXPECT_EQ(g[0], 1.0);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -85,6 +86,64 @@ TEST(VerificationV1, NormalizedPMBEnergyDensityIsExactAtEveryHorizon) {
   }
   // The analytic constant is inconsistent with the Riemann sum at every horizon tried.
   EXPECT_GT(smallestAnalyticError, 0.01);
+}
+
+// Peridigm's partial stress of LPS ("Elastic" with Compute Partial Stress) under isotropic
+// stretch 1 + s, at the points whose family is whole (at least a horizon inside the lattice):
+// theta = 3 s, the force state t = 9 K s |xi| / m at every bond (G drops out), and
+// sum xi (x) xi V = m/3 I on a cubic lattice: P = 3 K s I, for any horizon. A simple shear then
+// gives a symmetric tensor with zero trace to first order.
+TEST(VerificationV1, LPSPartialStressOfAnIsotropicStretchIs3KsI) {
+  const double K = 2.0e9, G = 1.1e9, s = 1e-3;
+  const int n = 11;
+  std::vector<std::array<double, 3>> pts;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
+  for (double delta : {2.0, 3.0}) {
+    Teuchos::ParameterList p;
+    p.set("Material Model", "Elastic");
+    p.set("Density", 1000.0);
+    p.set("Bulk Modulus", K);
+    p.set("Shear Modulus", G);
+    p.set("Compute Partial Stress", true);
+    ListReader r(p, "Materials -> M");
+    Problem pr(pts, delta, createMaterial(r));
+    auto whole = [&](int i) {
+      for (int d = 0; d < 3; ++d) {
+        const double c = pts[pr.topology.overlapGlobalId[i]][d];
+        if (c < delta || c > n - 1 - delta) return false;
+      }
+      return true;
+    };
+    double* y = pr.fields->node("Coordinates", 3);
+    const double* x = pr.fields->node("Model_Coordinates", 3);
+    for (int k = 0; k < 3 * pr.topology.numOverlap; ++k) y[k] = (1 + s) * x[k];
+    pr.evaluator->evaluate(0.0);
+    const double* P = pr.fields->node("Partial_Stress", 9);
+    double worst = 0;
+    int checked = 0;
+    for (int i = 0; i < pr.topology.numOwned; ++i) {
+      if (!whole(i)) continue;
+      ++checked;
+      for (int k = 0; k < 9; ++k)
+        worst = std::max(worst, std::fabs(P[9 * i + k] - (k % 4 == 0 ? 3 * K * s : 0.0)));
+    }
+    EXPECT_GT(checked, 100);
+    EXPECT_LT(worst, 1e-9 * 3 * K * s) << "delta = " << delta;
+    // Simple shear y_x += g y: no dilatation, a symmetric deviatoric tensor.
+    const double g = 1e-6;
+    for (int k = 0; k < pr.topology.numOverlap; ++k) {
+      for (int d = 0; d < 3; ++d) y[3 * k + d] = x[3 * k + d];
+      y[3 * k] += g * x[3 * k + 1];
+    }
+    pr.evaluator->evaluate(0.0);
+    const int centre = (n / 2) * n * n + (n / 2) * n + n / 2;  // global id = local id here
+    const double* Q = pr.fields->node("Partial_Stress", 9) + 9 * centre;
+    EXPECT_GT(Q[1], 0.0);
+    EXPECT_NEAR(Q[1], Q[3], 1e-3 * Q[1]);
+    EXPECT_LT(std::fabs(Q[0] + Q[4] + Q[8]), 1e-3 * Q[1]);
+  }
 }
 
 }  // namespace
