@@ -124,7 +124,8 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
              name == "Cauchy_Stress" || name == "Unrotated_Cauchy_Stress" ||
              name == "Von_Mises_Stress" || name == "Hourglass_Force_Density" ||
              name == "Equivalent_Plastic_Strain" || name == "Rotation_Tensor" ||
-             name == "Left_Stretch_Tensor") {
+             name == "Left_Stretch_Tensor" || name == "Velocity_Gradient" ||
+             name == "Unrotated_Rate_Of_Deformation") {
     // Maintained by the correspondence models (zero at the points of other blocks).
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
   } else if (name == "Contact_Force") {

@@ -57,6 +57,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   thickness_ = cloud.thickness;
   planar_ = cloud.dimension == 2;
   checkDimension();
+  checkPeriodicBox();
   // Blocks of the mesh -> block groups of the deck, and each point's horizon.
   std::map<int, int> groupOfBlock;  // mesh block id -> index in config_.blocks
   std::map<std::string, int> blockIdOfName;
@@ -452,7 +453,9 @@ void Simulation::evaluateForces(long long step) {
   if (contact_ && step == 0) searchContact();
   deformPeriodicBox();
   evaluator_->setTime(time_);
-  evaluator_->evaluate(dt_);
+  // Step 0 evaluates the state the run starts from: nothing has moved since, so no rate-form
+  // history (correspondence stress, viscous back state) may advance by a step.
+  evaluator_->evaluate(step == 0 ? 0.0 : dt_);
   if (friction_) {
     // The same value on every rank (it depends on the time alone).
     const double mu = friction_->evaluate(&time_);

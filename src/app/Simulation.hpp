@@ -80,6 +80,9 @@ class Simulation {
   [[noreturn]] void explainZeroTimeStep(const double* stiffness);
   // 2D: every block's material in plane stress or strain, no z condition; 3D: no plane material.
   void checkDimension();
+  // A deforming periodic box with a model that reads node velocities (their images lack the
+  // box's rate): an input error.
+  void checkPeriodicBox();
   void checkVariables();
   void computeAcceleration();
   void evaluateForces(long long step);

@@ -49,6 +49,19 @@ void Simulation::checkDimension() {
   // delta^5) V_j, with the points' volumes (area x thickness).
 }
 
+void Simulation::checkPeriodicBox() {
+  if (config_.discretization.periodic.deformation.empty()) return;
+  // Periodic images copy their point's velocity; in a deforming box an image also moves with the
+  // box (Fdot s), which the copy lacks.
+  for (const auto& g : config_.blocks)
+    if (config_.materials.at(g.material)->needsVelocity())
+      throw InputError(config_.discretization.periodic.deformationPath,
+                       "the material \"" + g.material + "\" of block " + g.name +
+                           " reads node velocities (the correspondence rate form), and the "
+                           "periodic images of a deforming box do not carry the box's rate yet; "
+                           "use \"Stress Integration: Total Lagrangian Green Strain\"");
+}
+
 void Simulation::explainZeroTimeStep(const double* stiffness) {
   // A zero stable time step has one of two causes: two points at the same place (a bond of
   // zero length is infinitely stiff) or a stiffness that overflows (a huge modulus). Name it,
@@ -100,8 +113,8 @@ void Simulation::checkVariables() {
     }
     if ((v == "Shape_Tensor_Inverse" || v == "Cauchy_Stress" || v == "Unrotated_Cauchy_Stress" ||
          v == "Von_Mises_Stress" || v == "Hourglass_Force_Density" ||
-         v == "Equivalent_Plastic_Strain" || v == "Rotation_Tensor" ||
-         v == "Left_Stretch_Tensor") &&
+         v == "Equivalent_Plastic_Strain" || v == "Rotation_Tensor" || v == "Left_Stretch_Tensor" ||
+         v == "Velocity_Gradient" || v == "Unrotated_Rate_Of_Deformation") &&
         !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a correspondence material (e.g. \"Elastic " +
                                  "Correspondence\"" +

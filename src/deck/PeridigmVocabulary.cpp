@@ -44,8 +44,6 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
-      "Unrotated_Rate_Of_Deformation",
-      "Velocity_Gradient",
       "Jacobian_Determinant",
       "Surface_Correction_Factor",
       "Concentration",

@@ -294,6 +294,11 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Von_Mises_Stress", 1, "von Mises stress of the Cauchy stress (correspondence models)"},
       {"Rotation_Tensor", 9, "rotation R of the polar decomposition F = R U (correspondence)"},
       {"Left_Stretch_Tensor", 9, "left stretch V = F R^T (correspondence models)"},
+      {"Velocity_Gradient", 9,
+       "velocity gradient L = Fdot F^-1 (correspondence models, rate form; zero with the Green "
+       "strain)"},
+      {"Unrotated_Rate_Of_Deformation", 9,
+       "unrotated rate of deformation d = R^T sym(L) R (correspondence models, rate form)"},
       {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
       {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
       {"Contact_Force", 3, "Contact_Force_Density x volume"},

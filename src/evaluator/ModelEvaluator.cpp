@@ -28,6 +28,9 @@ void ModelEvaluator::initialize() {
   state_.volume = fields_.node("Volume", 1);
   state_.horizon = fields_.node("Horizon", 1);
   state_.forceDensity = fields_.node("Force_Density", 3);
+  // Velocities only where some model reads them (a test scene without them allocates none).
+  for (const auto& b : blocks_) velocityGhosts_ = velocityGhosts_ || b.material->needsVelocity();
+  if (velocityGhosts_ || fields_.hasNode("Velocity")) state_.velocity = fields_.node("Velocity", 3);
   state_.bondSides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
 
   // Compact damage (1-byte broken flags instead of a float per bond): only if the caller allows
@@ -222,6 +225,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
   {
     Timers::Scope t(timers_, "Ghost exchange");
     fields_.refreshGhosts("Coordinates");
+    if (velocityGhosts_) fields_.refreshGhosts("Velocity");
     if (thermal_) {
       // alpha of each point's own material: across a bond between blocks each end expands as
       // its material does.

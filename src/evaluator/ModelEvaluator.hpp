@@ -84,6 +84,8 @@ class ModelEvaluator {
   bool storeBondLengths_ = true;
   bool compactDamage_ = false;
   bool partialVolumes_ = false;
+  bool velocityGhosts_ =
+      false;  // some block's material reads the velocities (the same on all ranks)
   std::vector<std::string> syncAfterPrecompute_;
 };
 

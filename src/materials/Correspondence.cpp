@@ -6,6 +6,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "materials/CorrespondenceRate.hpp"
 
 namespace peridot {
 
@@ -81,20 +82,25 @@ double vonMises(const double* a) {
 
 namespace {
 
-// K (symmetric: 6 sums) and N over point i's bonds, one vectorisable pass; the options are
+// K (symmetric: 6 sums) and N over point i's bonds, and with kVelocity the velocity sums
+// M = sum_j w (v_j - v_i) (x) xi V_j of the rate form, in one vectorisable pass; the options are
 // compile-time so that the loop has no branch.
-template <bool kDamage, bool kSides, bool kInfluence>
-void shapeSums(const ModelState& s, int i, double* K, double* N) {
+template <bool kDamage, bool kSides, bool kInfluence, bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* x = s.x;
   const double* y = s.y;
+  const double* v = s.velocity;
   const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
   const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  double vi0 = 0, vi1 = 0, vi2 = 0;
+  if constexpr (kVelocity) vi0 = v[3 * i], vi1 = v[3 * i + 1], vi2 = v[3 * i + 2];
   double k00 = 0, k01 = 0, k02 = 0, k11 = 0, k12 = 0, k22 = 0;
   double n00 = 0, n01 = 0, n02 = 0, n10 = 0, n11 = 0, n12 = 0, n20 = 0, n21 = 0, n22 = 0;
+  double m00 = 0, m01 = 0, m02 = 0, m10 = 0, m11 = 0, m12 = 0, m20 = 0, m21 = 0, m22 = 0;
 #pragma omp simd reduction(+ : k00, k01, k02, k11, k12, k22, n00, n01, n02, n10, n11, n12, n20, \
-                               n21, n22)
+                               n21, n22, m00, m01, m02, m10, m11, m12, m20, m21, m22)
   for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
     const int j = neighbors[b];
     double w = s.volume[j];
@@ -119,31 +125,57 @@ void shapeSums(const ModelState& s, int i, double* K, double* N) {
     n20 += Y2 * w0;
     n21 += Y2 * w1;
     n22 += Y2 * w2;
+    if constexpr (kVelocity) {
+      const double V0 = v[3 * j] - vi0, V1 = v[3 * j + 1] - vi1, V2 = v[3 * j + 2] - vi2;
+      m00 += V0 * w0;
+      m01 += V0 * w1;
+      m02 += V0 * w2;
+      m10 += V1 * w0;
+      m11 += V1 * w1;
+      m12 += V1 * w2;
+      m20 += V2 * w0;
+      m21 += V2 * w1;
+      m22 += V2 * w2;
+    }
   }
   const double k[9] = {k00, k01, k02, k01, k11, k12, k02, k12, k22};
   const double n[9] = {n00, n01, n02, n10, n11, n12, n20, n21, n22};
   std::copy(k, k + 9, K);
   std::copy(n, n + 9, N);
+  if constexpr (kVelocity) {
+    const double m[9] = {m00, m01, m02, m10, m11, m12, m20, m21, m22};
+    std::copy(m, m + 9, M);
+  }
 }
 
-template <bool kDamage, bool kSides>
-void shapeSums(const ModelState& s, int i, double* K, double* N) {
+template <bool kDamage, bool kSides, bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M) {
   if (s.influence)
-    shapeSums<kDamage, kSides, true>(s, i, K, N);
+    shapeSums<kDamage, kSides, true, kVelocity>(s, i, K, N, M);
   else
-    shapeSums<kDamage, kSides, false>(s, i, K, N);
+    shapeSums<kDamage, kSides, false, kVelocity>(s, i, K, N, M);
+}
+
+template <bool kVelocity>
+void shapeSums(const ModelState& s, int i, double* K, double* N, double* M, bool damage) {
+  if (damage)
+    s.bondSides ? shapeSums<true, true, kVelocity>(s, i, K, N, M)
+                : shapeSums<true, false, kVelocity>(s, i, K, N, M);
+  else
+    s.bondSides ? shapeSums<false, true, kVelocity>(s, i, K, N, M)
+                : shapeSums<false, false, kVelocity>(s, i, K, N, M);
 }
 
 }  // namespace
 
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
-                                       bool useDamage) {
+                                       bool useDamage, double* velocitySums) {
   double K[9], N[9];
   const bool damage = useDamage && s.bondDamage;
-  if (damage)
-    s.bondSides ? shapeSums<true, true>(s, i, K, N) : shapeSums<true, false>(s, i, K, N);
+  if (velocitySums)
+    shapeSums<true>(s, i, K, N, velocitySums, damage);
   else
-    s.bondSides ? shapeSums<false, true>(s, i, K, N) : shapeSums<false, false>(s, i, K, N);
+    shapeSums<false>(s, i, K, N, nullptr, damage);
   if (s.dimension == 2) {
     // A planar run's bonds all lie in z = 0: K's z row and column are zero. A unit zz entry
     // in K and N leaves the in-plane blocks as they are and gives the plane F_zz = 1.
@@ -187,6 +219,11 @@ CorrespondenceMaterial::CorrespondenceMaterial(ListReader& p, const std::string&
   if (!p.has("Hourglass Coefficient"))
     throw InputError(p.pathOf("Hourglass Coefficient"), "required (a number >= 0, e.g. 0.02)");
   hourglassCoefficient_ = p.nonNegativeNumber("Hourglass Coefficient", 0.0);
+  integration_ =
+      p.choice("Stress Integration", {"Hypoelastic Rate", "Total Lagrangian Green Strain"},
+               "Hypoelastic Rate") == "Hypoelastic Rate"
+          ? StressIntegration::HypoelasticRate
+          : StressIntegration::GreenStrain;
   if (p.has("Apply Shear Correction Factor")) {
     throw InputError(p.pathOf("Apply Shear Correction Factor"),
                      "not available for the correspondence models (as in Peridigm)");
@@ -203,6 +240,8 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
   hourglass_ = fields.node(kHourglassForceDensity, 3);
   rotation_ = fields.node(kRotationTensor, 9);
   leftStretch_ = fields.node(kLeftStretchTensor, 9);
+  velocityGradient_ = fields.node(kVelocityGradient, 9);
+  unrotatedRate_ = fields.node(kUnrotatedRateOfDeformation, 9);
   for (int r = 0; r < 3; ++r) {
     fRow_[r] = fields.node(kDeformationGradientRows[r], 3);
     aRow_[r] = fields.node(kForceTensorRows[r], 3);
@@ -210,14 +249,26 @@ void CorrespondenceMaterial::declareFields(FieldManager& fields) {
 }
 
 std::vector<std::string> CorrespondenceMaterial::outputFields() const {
-  return {kShapeTensorInverse, kDeformationGradient,   kCauchyStress,   kUnrotatedCauchyStress,
-          kVonMisesStress,     kHourglassForceDensity, kRotationTensor, kLeftStretchTensor};
+  return {kShapeTensorInverse, kDeformationGradient,       kCauchyStress,   kUnrotatedCauchyStress,
+          kVonMisesStress,     kHourglassForceDensity,     kRotationTensor, kLeftStretchTensor,
+          kVelocityGradient,   kUnrotatedRateOfDeformation};
+}
+
+std::vector<std::string> CorrespondenceMaterial::historyNodeFields() const {
+  if (!rateForm()) return {};
+  return {kUnrotatedCauchyStress, kRotationTensor, kLeftStretchTensor};
 }
 
 void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<int>& points) {
   checkDimension(s, name_);
   // C = 18 c_hg K / (pi delta^4) of every overlap point (the horizon is known on all of them).
   hourglassConstant_.resize(static_cast<std::size_t>(s.topology->numOverlap));
+  if (rateForm()) {
+    const std::size_t n = 9 * static_cast<std::size_t>(s.topology->numOverlap);
+    unrotatedNew_.resize(n, 0.0);
+    rotationNew_.resize(n, 0.0);
+    leftStretchNew_.resize(n, 0.0);
+  }
   for (int p = 0; p < s.topology->numOverlap; ++p) {
     const double d = s.horizon[p];
     hourglassConstant_[p] =
@@ -239,6 +290,7 @@ void CorrespondenceMaterial::initialize(const ModelState& s, const std::vector<i
       deformationGradient_[9 * i + k] = rotation_[9 * i + k] = leftStretch_[9 * i + k] =
           (k % 4 == 0) ? 1.0 : 0.0;
       cauchy_[9 * i + k] = unrotated_[9 * i + k] = 0.0;
+      velocityGradient_[9 * i + k] = unrotatedRate_[9 * i + k] = 0.0;
       fRow_[k / 3][3 * i + k % 3] = deformationGradient_[9 * i + k];
       aRow_[k / 3][3 * i + k % 3] = 0.0;
     }
@@ -254,6 +306,21 @@ void CorrespondenceMaterial::elasticStress(const double* E, double* S) const {
   for (int k = 0; k < 9; k += 4) S[k] += lame_ * trace;
 }
 
+void CorrespondenceMaterial::unrotatedCauchyStress(int, const double* d, double dt,
+                                                   const double* sigmaN, double* sigma) {
+  correspondence::hypoelasticIncrement(lame_, constants_.shearModulus, d, dt, sigmaN, sigma);
+}
+
+double CorrespondenceMaterial::rateEnergyDensity(const double* sigma) const {
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
+  double ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev * dev;
+  }
+  return 0.5 * mean * mean / constants_.bulkModulus + 0.25 * ss / constants_.shearModulus;
+}
+
 double CorrespondenceMaterial::energyDensity(int, const double* E) const {
   const double trace = E[0] + E[4] + E[8];
   double EE = 0;
@@ -267,7 +334,8 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
   for (int i : points) {
     double* Kinv = shapeTensorInverse_ + 9 * i;
     double* F = deformationGradient_ + 9 * i;
-    if (!shapeTensorAndDeformationGradient(s, i, Kinv, F)) {
+    double M[9];  // the rate form's velocity sums, from the same pass
+    if (!shapeTensorAndDeformationGradient(s, i, Kinv, F, true, rateForm() ? M : nullptr)) {
       // Zero force state and outputs, then stop the run on every rank (below).
       if (message.empty()) {
         char when[64];
@@ -281,52 +349,104 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
       for (int k = 0; k < 9; ++k) fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;
       continue;
     }
-    double E[9], S[9], P[9];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        // Green strain E = (F^T F - I) / 2
-        double ftf = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
-        E[3 * r + c] = 0.5 * (ftf - (r == c ? 1.0 : 0.0));
+    double P[9];
+    if (rateForm()) {
+      if (!rateStress(s, i, F, Kinv, M, P) && message.empty()) {
+        char what[160];
+        std::snprintf(what, sizeof what,
+                      " has an inverted or singular deformation gradient "
+                      "(det F = %.6g) at time %.9g",
+                      determinant(F), s.time);
+        message = "Materials -> \"" + name_ + "\": " + describePoint(s, i) + what +
+                  ": the rate form needs F^-1 (Peridigm stops here too, \"failed to invert "
+                  "deformation gradient\")";
       }
-    secondPiolaKirchhoff(i, E, S);
-    multiply(F, S, P);  // first Piola-Kirchhoff P = F S
+    } else {
+      greenStress(i, F, P);
+    }
     double A[9];
     multiply(P, Kinv, A);  // A = P K^-1
     for (int k = 0; k < 9; ++k) {
       fRow_[k / 3][3 * i + k % 3] = F[k];
       aRow_[k / 3][3 * i + k % 3] = A[k];
     }
-    // Cauchy sigma = P F^T / J; unrotated R^T sigma R = U S U / J (F = R U).
-    const double J = determinant(F);
-    double* sigma = cauchy_ + 9 * i;
-    double* unrotated = unrotated_ + 9 * i;
-    if (J > 0) {
-      multiplyTransposed(P, F, sigma);
-      for (int k = 0; k < 9; ++k) sigma[k] /= J;
-      double R[9], tmp[9];
-      if (polarRotation(F, R)) {
-        // R^T sigma R
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            tmp[3 * r + c] =
-                sigma[3 * r] * R[c] + sigma[3 * r + 1] * R[3 + c] + sigma[3 * r + 2] * R[6 + c];
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            unrotated[3 * r + c] = R[r] * tmp[c] + R[3 + r] * tmp[3 + c] + R[6 + r] * tmp[6 + c];
-        std::copy(R, R + 9, rotation_ + 9 * i);
-        multiplyTransposed(F, R, leftStretch_ + 9 * i);  // V = F R^T
-      } else {
-        std::copy(sigma, sigma + 9, unrotated);
-      }
-    } else {
-      // An inverted or flattened point: the force (from P) stays defined, the Cauchy stress
-      // and the polar decomposition do not; report S for sigma rather than a NaN, and keep the
-      // last rotation and stretch.
-      for (int k = 0; k < 9; ++k) sigma[k] = unrotated[k] = S[k];
-    }
-    vonMises_[i] = vonMises(sigma);
+    vonMises_[i] = vonMises(cauchy_ + 9 * i);
   }
   throwIfAnyRank(message, s.topology->comm, true);
+}
+
+bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double* F,
+                                        const double* Kinv, const double* M, double* P) {
+  using namespace correspondence;
+  double* L = velocityGradient_ + 9 * i;
+  double* d = unrotatedRate_ + 9 * i;
+  double* sigmaNew = unrotatedNew_.data() + 9 * i;
+  double* Rnew = rotationNew_.data() + 9 * i;
+  double* Vnew = leftStretchNew_.data() + 9 * i;
+  double Finv[9];
+  const double J = determinant(F);
+  if (!(J > 0) || !invert(F, Finv)) {
+    // Keep the history as it was; the run stops (the caller's collective error).
+    std::fill(P, P + 9, 0.0);
+    std::fill(L, L + 9, 0.0);
+    std::fill(d, d + 9, 0.0);
+    std::copy(unrotated_ + 9 * i, unrotated_ + 9 * i + 9, sigmaNew);
+    std::copy(rotation_ + 9 * i, rotation_ + 9 * i + 9, Rnew);
+    std::copy(leftStretch_ + 9 * i, leftStretch_ + 9 * i + 9, Vnew);
+    return false;
+  }
+  velocityGradient(M, Kinv, Finv, L);
+  flanaganTaylorStep(L, leftStretch_ + 9 * i, rotation_ + 9 * i, s.dt, Vnew, Rnew, d);
+  unrotatedCauchyStress(i, d, s.dt, unrotated_ + 9 * i, sigmaNew);
+  // sigma = R sigma_u R^T, P = J sigma F^-T
+  double tmp[9];
+  double* sigma = cauchy_ + 9 * i;
+  multiply(Rnew, sigmaNew, tmp);
+  multiplyTransposed(tmp, Rnew, sigma);
+  multiplyTransposed(sigma, Finv, P);
+  for (int k = 0; k < 9; ++k) P[k] *= J;
+  return true;
+}
+
+void CorrespondenceMaterial::greenStress(int i, const double* F, double* P) {
+  using namespace correspondence;
+  double E[9], S[9];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      // Green strain E = (F^T F - I) / 2
+      double ftf = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
+      E[3 * r + c] = 0.5 * (ftf - (r == c ? 1.0 : 0.0));
+    }
+  secondPiolaKirchhoff(i, E, S);
+  multiply(F, S, P);  // first Piola-Kirchhoff P = F S
+  // Cauchy sigma = P F^T / J; unrotated R^T sigma R = U S U / J (F = R U).
+  const double J = determinant(F);
+  double* sigma = cauchy_ + 9 * i;
+  double* unrotated = unrotated_ + 9 * i;
+  if (J > 0) {
+    multiplyTransposed(P, F, sigma);
+    for (int k = 0; k < 9; ++k) sigma[k] /= J;
+    double R[9], tmp[9];
+    if (polarRotation(F, R)) {
+      // R^T sigma R
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          tmp[3 * r + c] =
+              sigma[3 * r] * R[c] + sigma[3 * r + 1] * R[3 + c] + sigma[3 * r + 2] * R[6 + c];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          unrotated[3 * r + c] = R[r] * tmp[c] + R[3 + r] * tmp[3 + c] + R[6 + r] * tmp[6 + c];
+      std::copy(R, R + 9, rotation_ + 9 * i);
+      multiplyTransposed(F, R, leftStretch_ + 9 * i);  // V = F R^T
+    } else {
+      std::copy(sigma, sigma + 9, unrotated);
+    }
+  } else {
+    // An inverted or flattened point: the force (from P) stays defined, the Cauchy stress
+    // and the polar decomposition do not; report S for sigma rather than a NaN, and keep the
+    // last rotation and stretch.
+    for (int k = 0; k < 9; ++k) sigma[k] = unrotated[k] = S[k];
+  }
 }
 
 void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector<int>& points) {
@@ -341,6 +461,15 @@ void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector
       sides ? forceLoop<true, true, false>(s, points) : forceLoop<true, false, false>(s, points);
     else
       sides ? forceLoop<false, true, false>(s, points) : forceLoop<false, false, false>(s, points);
+  }
+  if (rateForm()) {
+    for (int i : points) {
+      std::copy(unrotatedNew_.begin() + 9 * i, unrotatedNew_.begin() + 9 * i + 9,
+                unrotated_ + 9 * i);
+      std::copy(rotationNew_.begin() + 9 * i, rotationNew_.begin() + 9 * i + 9, rotation_ + 9 * i);
+      std::copy(leftStretchNew_.begin() + 9 * i, leftStretchNew_.begin() + 9 * i + 9,
+                leftStretch_ + 9 * i);
+    }
   }
   commitHistory(points);
 }
@@ -417,6 +546,10 @@ void CorrespondenceMaterial::forceLoop(const ModelState& s, const std::vector<in
 void CorrespondenceMaterial::storedEnergyDensity(const ModelState&, const std::vector<int>& points,
                                                  double* out) const {
   for (int i : points) {
+    if (rateForm()) {
+      out[i] = rateEnergyDensity(unrotated_ + 9 * i);
+      continue;
+    }
     const double* F = deformationGradient_ + 9 * i;
     double E[9];
     for (int r = 0; r < 3; ++r)

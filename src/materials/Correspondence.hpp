@@ -10,10 +10,18 @@
 //                        explain, T^hg = (1 - d) C_hg ((Y - F_i xi) . Y) / (|xi| |Y|) Y with
 //                        C_hg = 18 c_hg K / (pi delta^4), c_hg = "Hourglass Coefficient"
 //
-// A model derived from CorrespondenceMaterial supplies only its constitutive law: the second
-// Piola-Kirchhoff stress S of a point from its deformation gradient (Green strain
-// E = (F^T F - I) / 2), per point, and commits its history once per step. Everything else —
-// the bond loops, the singular-shape-tensor diagnostics, the output tensors — lives here.
+// Two ways to integrate the stress ("Stress Integration"):
+//   "Hypoelastic Rate" (default, as Peridigm): each step, the velocity gradient L = Fdot F^-1,
+//     Flanagan and Taylor's update of V and R and the unrotated rate of deformation d = R^T D R
+//     (materials/CorrespondenceRate.hpp); the model advances the unrotated Cauchy stress
+//     sigma_u by d dt; sigma = R sigma_u R^T and P = J sigma F^-T. sigma_u, R and V are history
+//     (committed once per step, saved in checkpoints).
+//   "Total Lagrangian Green Strain" (Peridot extension): the second Piola-Kirchhoff stress S of
+//     a point from its Green strain E = (F^T F - I) / 2, P = F S; R and V from F's polar
+//     decomposition.
+// A model derived from CorrespondenceMaterial supplies only its constitutive law (one for each
+// form) and commits its history once per step. Everything else — the bond loops, the
+// singular-shape-tensor diagnostics, the output tensors — lives here.
 //
 // Pull form: point i adds both ends' force states of each bond, f_i = sum_j [T_i<xi> -
 // T_j<-xi>] V_j = sum_j (w_ij A_i + w_ji A_j) xi V_j with A = P K^-1; A and F are ghosted after
@@ -51,8 +59,10 @@ double vonMises(const double* a);
 // (one pass over its bonds, weights omega (1 - d) on its own side). Returns false when the shape
 // tensor is singular (Kinv and F are then zero). `useDamage` false ignores the bond damage
 // (Peridigm's Deformation_Gradient compute). In a planar run F is the in-plane F with F_zz = 1.
+// With `velocitySums`, the same pass also sums M = sum_j w (v_j - v_i) (x) xi V_j from
+// `s.velocity` (the rate form's Fdot = M K^-1).
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
-                                       bool useDamage = true);
+                                       bool useDamage = true, double* velocitySums = nullptr);
 
 // "point <id> at (x, y, z) (N intact bonds of M)": the diagnostics' description of a point.
 std::string describePoint(const ModelState& s, int i);
@@ -61,6 +71,7 @@ std::string describePoint(const ModelState& s, int i);
 
 class CorrespondenceMaterial : public MaterialModel {
  public:
+  enum class StressIntegration { HypoelasticRate, GreenStrain };
   double density() const override { return density_; }
   double bulkModulus() const override { return constants_.bulkModulus; }
   double youngsModulus() const override { return constants_.youngsModulus; }
@@ -78,6 +89,11 @@ class CorrespondenceMaterial : public MaterialModel {
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
   std::vector<std::string> outputFields() const override;
+  // The rate form's history: the unrotated Cauchy stress, R and V.
+  std::vector<std::string> historyNodeFields() const override;
+  bool advancesHistory() const override { return rateForm(); }
+  bool needsVelocity() const override { return rateForm(); }
+  bool rateForm() const { return integration_ == StressIntegration::HypoelasticRate; }
   std::string family() const override { return "correspondence"; }
   // K and F use the same weights, so F is exact for affine motion whatever omega is.
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
@@ -91,6 +107,9 @@ class CorrespondenceMaterial : public MaterialModel {
   // The polar decomposition F = R U = V R.
   static constexpr const char* kRotationTensor = "Rotation_Tensor";
   static constexpr const char* kLeftStretchTensor = "Left_Stretch_Tensor";
+  // The rate form's kinematics (zero with the Green strain): L and d = R^T sym(L) R.
+  static constexpr const char* kVelocityGradient = "Velocity_Gradient";
+  static constexpr const char* kUnrotatedRateOfDeformation = "Unrotated_Rate_Of_Deformation";
   // Per point, ghosted, by rows (ghost refreshes move 1- or 3-component fields): F, and
   // A = P K^-1, the tensor that maps a bond xi to the force state.
   static constexpr const char* kDeformationGradientRows[3] = {
@@ -105,11 +124,21 @@ class CorrespondenceMaterial : public MaterialModel {
   // step's new history in scratch space and commit it in commitHistory.
   virtual void secondPiolaKirchhoff(int i, const double* E, double* S) = 0;
   virtual void commitHistory(const std::vector<int>&) {}
+  // The rate form: the unrotated Cauchy stress of owned point i at the end of a step of size dt
+  // from its value sigmaN at the start and the unrotated rate of deformation d (symmetric).
+  // Called from precompute, like secondPiolaKirchhoff. Default: the linear hypoelastic law
+  // sigma = sigmaN + dt (lambda tr(d) I + 2 mu d).
+  virtual void unrotatedCauchyStress(int i, const double* d, double dt, const double* sigmaN,
+                                     double* sigma);
   // Recoverable energy density of point i at Green strain E (no hourglass term).
   virtual double energyDensity(int i, const double* E) const;
+  // The rate form's: the complementary energy of the unrotated stress, p^2 / (2K) + s:s / (4 mu)
+  // (p the mean stress, s the deviator), the linear-elastic energy of that stress.
+  double rateEnergyDensity(const double* sigma) const;
   // The St Venant-Kirchhoff stress S = lambda tr(E) I + 2 mu E.
   void elasticStress(const double* E, double* S) const;
   const std::string& name() const { return name_; }
+  StressIntegration integration_ = StressIntegration::HypoelasticRate;
 
   ElasticConstants constants_;
   double lame_ = 0.0;  // lambda
@@ -125,6 +154,16 @@ class CorrespondenceMaterial : public MaterialModel {
   double* hourglass_ = nullptr;
   double* rotation_ = nullptr;
   double* leftStretch_ = nullptr;
+  double* velocityGradient_ = nullptr;
+  double* unrotatedRate_ = nullptr;
+  // The rate form's step-end sigma_u, R, V from the last precompute (9 per overlap point),
+  // committed by computeForce.
+  std::vector<double> unrotatedNew_, rotationNew_, leftStretchNew_;
+  // P of owned point i: from the Green strain, or the rate form's step; false when the rate
+  // form meets an inverted or singular F (P zero, `message` set).
+  void greenStress(int i, const double* F, double* P);
+  bool rateStress(const ModelState& s, int i, const double* F, const double* Kinv, const double* M,
+                  double* P);
   template <bool kDamage, bool kSides, bool kInfluence>
   void forceLoop(const ModelState& state, const std::vector<int>& points);
   std::vector<double> hourglassConstant_;  // per overlap point: 18 c_hg K / (pi delta^4)

@@ -12,7 +12,8 @@ void ElasticCorrespondence::secondPiolaKirchhoff(int, const double* E, double* S
 PERIDOT_REGISTER_MATERIAL(
     "Elastic Correspondence", ElasticCorrespondence,
     "Non-ordinary correspondence solid (Silling): shape tensor, deformation gradient, linear "
-    "isotropic law on the Green strain, Peridigm's hourglass control",
+    "isotropic hypoelastic law in Flanagan-Taylor's unrotated frame (or on the Green strain), "
+    "Peridigm's hourglass control",
     (std::vector<ParameterDoc>{
         {"Density", "positive number, required: mass density"},
         {"Bulk Modulus", "positive number: K (exactly two of K, G, E, nu)"},
@@ -22,6 +23,10 @@ PERIDOT_REGISTER_MATERIAL(
         {"Hourglass Coefficient",
          "number >= 0, required: c_hg of the hourglass bond force, C = 18 c_hg K / (pi "
          "delta^4); Peridigm's decks use 0.0-0.05"},
+        {"Stress Integration",
+         "\"Hypoelastic Rate\" (default, as Peridigm: unrotated Cauchy stress advanced by the "
+         "Flanagan-Taylor rate of deformation) or \"Total Lagrangian Green Strain\" (Peridot "
+         "extension: stress from the Green strain of F)"},
         {"Apply Shear Correction Factor", "not available (as in Peridigm)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},

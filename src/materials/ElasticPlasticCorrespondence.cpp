@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "materials/CorrespondenceRate.hpp"
 
 namespace peridot {
 
@@ -44,7 +45,14 @@ double ElasticPlasticCorrespondence::yieldStressAt(const double* x) const {
 void ElasticPlasticCorrespondence::declareFields(FieldManager& fields) {
   CorrespondenceMaterial::declareFields(fields);
   eqps_ = fields.node(kEquivalentPlasticStrain, 1);
-  plasticStrain_ = fields.node(kPlasticStrain, 9);
+  if (!rateForm()) plasticStrain_ = fields.node(kPlasticStrain, 9);
+}
+
+std::vector<std::string> ElasticPlasticCorrespondence::historyNodeFields() const {
+  auto names = CorrespondenceMaterial::historyNodeFields();
+  names.push_back(kEquivalentPlasticStrain);
+  if (!rateForm()) names.push_back(kPlasticStrain);
+  return names;
 }
 
 std::vector<std::string> ElasticPlasticCorrespondence::outputFields() const {
@@ -57,14 +65,15 @@ void ElasticPlasticCorrespondence::initialize(const ModelState& s, const std::ve
   const std::size_t n = static_cast<std::size_t>(s.topology->numOverlap);
   if (eqpsNew_.size() < n) {
     eqpsNew_.resize(n, 0.0);
-    plasticStrainNew_.resize(9 * n, 0.0);
+    if (!rateForm()) plasticStrainNew_.resize(9 * n, 0.0);
     yield_.resize(n, yieldStress_);
   }
   for (int i : points) {
     yield_[i] = yieldStressAt(s.x + 3 * i);
     eqpsNew_[i] = eqps_[i];
-    std::copy(plasticStrain_ + 9 * i, plasticStrain_ + 9 * i + 9,
-              plasticStrainNew_.begin() + 9 * i);
+    if (!rateForm())
+      std::copy(plasticStrain_ + 9 * i, plasticStrain_ + 9 * i + 9,
+                plasticStrainNew_.begin() + 9 * i);
   }
   CorrespondenceMaterial::initialize(s, points);
 }
@@ -99,9 +108,33 @@ void ElasticPlasticCorrespondence::secondPiolaKirchhoff(int i, const double* E, 
   eqpsNew_[i] = eqps_[i] + dgamma;
 }
 
+void ElasticPlasticCorrespondence::unrotatedCauchyStress(int i, const double* d, double dt,
+                                                         const double* sigmaN, double* sigma) {
+  const double G = constants_.shearModulus;
+  correspondence::hypoelasticIncrement(lame_, G, d, dt, sigmaN, sigma);  // trial
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
+  double dev[9], ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    dev[k] = sigma[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev[k] * dev[k];
+  }
+  const double q = std::sqrt(1.5 * ss);  // von Mises of the trial stress
+  const double yieldNow = yield_[i] + hardeningModulus_ * eqps_[i];
+  if (q <= yieldNow || !(ss > 0)) {
+    eqpsNew_[i] = eqps_[i];
+    return;
+  }
+  // Radial return: the deviator shrinks by 3 mu dgamma along its own direction.
+  const double dgamma = (q - yieldNow) / (3.0 * G + hardeningModulus_);
+  const double shrink = 1.0 - 3.0 * G * dgamma / q;
+  for (int k = 0; k < 9; ++k) sigma[k] = (k % 4 == 0 ? mean : 0.0) + shrink * dev[k];
+  eqpsNew_[i] = eqps_[i] + dgamma;
+}
+
 void ElasticPlasticCorrespondence::commitHistory(const std::vector<int>& points) {
   for (int i : points) {
     eqps_[i] = eqpsNew_[i];
+    if (rateForm()) continue;
     std::copy(plasticStrainNew_.begin() + 9 * i, plasticStrainNew_.begin() + 9 * i + 9,
               plasticStrain_ + 9 * i);
   }
@@ -115,8 +148,9 @@ double ElasticPlasticCorrespondence::energyDensity(int i, const double* E) const
 
 PERIDOT_REGISTER_MATERIAL(
     "Elastic Plastic Correspondence", ElasticPlasticCorrespondence,
-    "Correspondence solid with J2 (von Mises) perfect plasticity on the Green strain, radial "
-    "return; outputs Equivalent_Plastic_Strain, Von_Mises_Stress",
+    "Correspondence solid with J2 (von Mises) perfect plasticity, radial return on the "
+    "unrotated Cauchy stress (rate form) or the Green strain; outputs "
+    "Equivalent_Plastic_Strain, Von_Mises_Stress",
     (std::vector<ParameterDoc>{
         {"Density", "positive number, required: mass density"},
         {"Bulk Modulus", "positive number: K (exactly two of K, G, E, nu)"},
@@ -127,6 +161,10 @@ PERIDOT_REGISTER_MATERIAL(
         {"Hourglass Coefficient",
          "number >= 0, required: c_hg of the hourglass bond force, C = 18 c_hg K / (pi "
          "delta^4)"},
+        {"Stress Integration",
+         "\"Hypoelastic Rate\" (default, as Peridigm: unrotated Cauchy stress advanced by the "
+         "Flanagan-Taylor rate of deformation) or \"Total Lagrangian Green Strain\" (Peridot "
+         "extension: stress from the Green strain of F)"},
         {"Apply Shear Correction Factor", "not available (as in Peridigm)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},

@@ -9,9 +9,11 @@
 // decreases. History per point: E^p (9) and eps_p (Equivalent_Plastic_Strain), saved in
 // checkpoints. "Isotropic Hardening Correspondence" (derived) adds H and Peridigm's flaw.
 //
-// Peridigm integrates the same return mapping on the unrotated rate of deformation (hypoelastic
-// rate form, Flanagan-Taylor rotation); for small elastic strains the two agree to first order
-// (doc/theory/correspondence.md).
+// That is the "Total Lagrangian Green Strain" form. The default, "Hypoelastic Rate" (as
+// Peridigm), makes the same radial return on the unrotated Cauchy stress: trial sigma_u + dt C:d,
+// q its von Mises stress, dgamma = (q - sigma_Y - H eps_p) / (3 mu + H), the deviator scaled by
+// 1 - 3 mu dgamma / q, eps_p += dgamma; history eps_p and the base's sigma_u, R, V. For small
+// elastic strains the two forms agree to first order (doc/theory/correspondence.md).
 #include <vector>
 
 #include "materials/Correspondence.hpp"
@@ -25,9 +27,7 @@ class ElasticPlasticCorrespondence : public CorrespondenceMaterial {
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> outputFields() const override;
-  std::vector<std::string> historyNodeFields() const override {
-    return {kEquivalentPlasticStrain, kPlasticStrain};
-  }
+  std::vector<std::string> historyNodeFields() const override;
   bool advancesHistory() const override { return true; }
 
   static constexpr const char* kEquivalentPlasticStrain = "Equivalent_Plastic_Strain";
@@ -39,6 +39,8 @@ class ElasticPlasticCorrespondence : public CorrespondenceMaterial {
  protected:
   ElasticPlasticCorrespondence(ListReader& params, const std::string& name, bool hardening);
   void secondPiolaKirchhoff(int i, const double* E, double* S) override;
+  void unrotatedCauchyStress(int i, const double* d, double dt, const double* sigmaN,
+                             double* sigma) override;
   void commitHistory(const std::vector<int>& points) override;
   double energyDensity(int i, const double* E) const override;
 
@@ -47,7 +49,7 @@ class ElasticPlasticCorrespondence : public CorrespondenceMaterial {
   bool flaw_ = false;
   double flawLocation_[3] = {0, 0, 0}, flawSize_ = 1.0, flawMagnitude_ = 0.0;
   double* eqps_ = nullptr;           // committed eps_p
-  double* plasticStrain_ = nullptr;  // committed E^p, 9 per point
+  double* plasticStrain_ = nullptr;  // committed E^p, 9 per point (Green strain form only)
   // This step's values from the last precompute, committed by computeForce.
   std::vector<double> eqpsNew_, plasticStrainNew_, yield_;
 };

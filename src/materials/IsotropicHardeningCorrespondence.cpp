@@ -5,7 +5,8 @@ namespace peridot {
 PERIDOT_REGISTER_MATERIAL(
     "Isotropic Hardening Correspondence", IsotropicHardeningCorrespondence,
     "Correspondence solid with J2 plasticity and linear isotropic hardening (radial return on "
-    "the Green strain); optional Gaussian flaw lowering the yield stress",
+    "the unrotated Cauchy stress, or on the Green strain); optional Gaussian flaw lowering the "
+    "yield stress",
     (std::vector<ParameterDoc>{
         {"Density", "positive number, required: mass density"},
         {"Bulk Modulus", "positive number: K (exactly two of K, G, E, nu)"},
@@ -23,6 +24,10 @@ PERIDOT_REGISTER_MATERIAL(
         {"Hourglass Coefficient",
          "number >= 0, required: c_hg of the hourglass bond force, C = 18 c_hg K / (pi "
          "delta^4)"},
+        {"Stress Integration",
+         "\"Hypoelastic Rate\" (default, as Peridigm: unrotated Cauchy stress advanced by the "
+         "Flanagan-Taylor rate of deformation) or \"Total Lagrangian Green Strain\" (Peridot "
+         "extension: stress from the Green strain of F)"},
         {"Apply Shear Correction Factor", "not available (as in Peridigm)"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},

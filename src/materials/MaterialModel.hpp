@@ -17,8 +17,12 @@ namespace peridot {
 struct ModelState {
   const Topology* topology = nullptr;
   FieldManager* fields = nullptr;
-  const double* x = nullptr;        // reference coordinates, 3 per point
-  const double* y = nullptr;        // current coordinates, 3 per point
+  const double* x = nullptr;  // reference coordinates, 3 per point
+  const double* y = nullptr;  // current coordinates, 3 per point
+  // Node velocities, 3 per point, ghosted before each evaluation when some block's material
+  // reads them (MaterialModel::needsVelocity); at an evaluation of step n -> n+1 they are the
+  // mid-step velocities that moved y (y_{n+1} = y_n + dt v).
+  const double* velocity = nullptr;
   const double* volume = nullptr;   // per point
   const double* horizon = nullptr;  // per point
   double* forceDensity = nullptr;   // 3 per point; kernels write owned points only
@@ -150,6 +154,9 @@ class MaterialModel {
   // True when computeForce advances a history (plastic or viscous state) by one step: such a
   // model cannot be probed by extra force evaluations (the "Verlet Limit" time step estimate).
   virtual bool advancesHistory() const { return false; }
+  // True when the model reads ModelState::velocity of its points and their neighbours (the rate
+  // form of the correspondence models): the evaluator then ghosts the velocities.
+  virtual bool needsVelocity() const { return false; }
   // A tag shared by models whose points may be bonded to each other.
   virtual std::string family() const = 0;
   // ThreeD unless the deck asks for "Plane Stress" or "Plane Strain"; the run checks that it

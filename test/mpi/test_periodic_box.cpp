@@ -177,5 +177,26 @@ TEST(DeformablePeriodicBox, NeedsAPeriodicAxisAndAFiniteGradient) {
   }
 }
 
+// The correspondence rate form reads velocities, which the images of a deforming box do not
+// carry with the box's rate: refused with the way out; the Green strain form runs.
+TEST(DeformablePeriodicBox, RefusesTheCorrespondenceRateForm) {
+  std::string deck = periodicCube(kIsotropic, stretchConditions(), 1e-3, 1.5e-3);
+  const std::string pmb = "      Material Model: \"Normalized PMB\"\n";
+  deck.replace(deck.find(pmb), pmb.size(),
+               "      Material Model: \"Elastic Correspondence\"\n"
+               "      Shear Modulus: 6.0\n      Hourglass Coefficient: 0.0\n");
+  try {
+    makeSimulation(deck);
+    FAIL() << "the rate form ran in a deforming periodic box";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Total Lagrangian Green Strain"), std::string::npos)
+        << e.what();
+  }
+  const std::string hourglass = "      Hourglass Coefficient: 0.0\n";
+  deck.replace(deck.find(hourglass), hourglass.size(),
+               hourglass + "      Stress Integration: \"Total Lagrangian Green Strain\"\n");
+  EXPECT_NO_THROW(makeSimulation(deck)->run());
+}
+
 }  // namespace
 }  // namespace peridot

@@ -41,6 +41,7 @@ peridot_restart_test(split_visco split Visco.yaml.in 16.0 8.0 10 "Dilatation")
 # Pals (multipliers recomputed at start-up, per-bond influence tabulated again) with Interface
 # Aware damage breaking bonds on both sides of the checkpoint.
 peridot_restart_test(split_pals split Pals.yaml.in 16.0 8.0 10 "Damage")
-# Correspondence plastic history (9-component node field E^p and eps_p) across a restart.
+# Correspondence history (the rate form's sigma_u, R, V, 9 components each, and eps_p) across a
+# restart.
 peridot_restart_test(split_correspondence split Correspondence.yaml.in 16.0 8.0 10
                      "Equivalent_Plastic_Strain")

@@ -1,5 +1,7 @@
 // The correspondence models ("Elastic Correspondence", "Elastic Plastic Correspondence",
-// "Isotropic Hardening Correspondence") on a 13^3 unit lattice (horizon 3.015) whose centre is
+// "Isotropic Hardening Correspondence") with "Stress Integration: Total Lagrangian Green Strain"
+// (the rate form, the default, is checked in test_correspondence_rate.cpp and
+// test_correspondence_forms.cpp) on a 13^3 unit lattice (horizon 3.015) whose centre is
 // two horizons from every face. Golds are independent of the model's code: the deformation
 // gradient imposed; the Cauchy stress of a St Venant-Kirchhoff solid written out here from the
 // closed forms of each homogeneous deformation (and the linear-elastic limit at small strain);
@@ -37,6 +39,7 @@ std::shared_ptr<MaterialModel> correspondenceModel(const std::string& model, dou
   p.set("Bulk Modulus", kK);
   p.set("Shear Modulus", kG);
   p.set("Hourglass Coefficient", hourglass);
+  p.set("Stress Integration", "Total Lagrangian Green Strain");
   if (yield > 0) p.set("Yield Stress", yield);
   if (H >= 0) p.set("Hardening Modulus", H);
   ListReader r(p, "Materials -> M");
