@@ -282,7 +282,7 @@ peridot_baddeck(pv_element_horizon DECK pv_element_horizon.yaml
 
 # ---- Peridigm features Peridot lacks: named as such (issue 12) ----
 peridot_baddeck(peridigm_output_variable DECK peridigm_output_variable.yaml
-  EXPECT [[Output -> Output Variables -> Partial_Stress: the Peridigm output variable "Partial_Stress" is not supported by Peridot yet]])
+  EXPECT [[Output -> Output Variables -> Bond_Visualization: the Peridigm output variable "Bond_Visualization" is not supported by Peridot yet]])
 peridot_baddeck(data_loader DECK data_loader.yaml
   EXPECT [[Data Loader: Peridigm's ]] ALSO [[("Data Loader") is not supported by Peridot yet]])
 # ---- fuzzer findings (tools/fuzz, doc/robustness.md): each once crashed, hung or misled ----
