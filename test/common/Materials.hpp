@@ -2,8 +2,10 @@
 // A material model from Young's modulus for kernel tests: `mode` is "", "Plane Stress" or
 // "Plane Strain"; Poisson's ratio is set only when nu > -1 (bond-based models have their own).
 #include <Teuchos_ParameterList.hpp>
+#include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "materials/MaterialModel.hpp"
 
@@ -20,6 +22,35 @@ inline std::shared_ptr<MaterialModel> material(const std::string& model, const s
   if (!mode.empty()) p.set(mode, true);
   ListReader r(p, "Materials -> M");
   return createMaterial(r);
+}
+
+// A correspondence model with bulk modulus K and shear modulus G (density 1): `integration` is
+// the Stress Integration ("Hypoelastic Rate" or "Total Lagrangian Green Strain"); the yield
+// stress and hardening modulus are set when positive (resp. non-negative).
+inline std::shared_ptr<MaterialModel> correspondence(const std::string& model, double K, double G,
+                                                     double hourglass,
+                                                     const std::string& integration,
+                                                     double yield = 0.0, double H = -1.0) {
+  Teuchos::ParameterList p;
+  p.set("Material Model", model);
+  p.set("Density", 1.0);
+  p.set("Bulk Modulus", K);
+  p.set("Shear Modulus", G);
+  p.set("Hourglass Coefficient", hourglass);
+  p.set("Stress Integration", integration);
+  if (yield > 0) p.set("Yield Stress", yield);
+  if (H >= 0) p.set("Hardening Modulus", H);
+  ListReader r(p, "Materials -> M");
+  return createMaterial(r);
+}
+
+// The points (i, j, k), 0 <= i, j, k < n, of the unit cubic lattice, k fastest.
+inline std::vector<std::array<double, 3>> cubicLattice(int n) {
+  std::vector<std::array<double, 3>> pts;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
+  return pts;
 }
 
 }  // namespace testing

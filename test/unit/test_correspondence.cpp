@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "Materials.hpp"
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
 #include "damage/DamageModel.hpp"
@@ -33,26 +34,11 @@ const long long kCentre = 6 * kN * kN + 6 * kN + 6;
 
 std::shared_ptr<MaterialModel> correspondenceModel(const std::string& model, double hourglass,
                                                    double yield = 0.0, double H = -1.0) {
-  Teuchos::ParameterList p;
-  p.set("Material Model", model);
-  p.set("Density", 1.0);
-  p.set("Bulk Modulus", kK);
-  p.set("Shear Modulus", kG);
-  p.set("Hourglass Coefficient", hourglass);
-  p.set("Stress Integration", "Total Lagrangian Green Strain");
-  if (yield > 0) p.set("Yield Stress", yield);
-  if (H >= 0) p.set("Hardening Modulus", H);
-  ListReader r(p, "Materials -> M");
-  return createMaterial(r);
+  return testing::correspondence(model, kK, kG, hourglass, "Total Lagrangian Green Strain", yield,
+                                 H);
 }
 
-std::vector<std::array<double, 3>> lattice(int n) {
-  std::vector<std::array<double, 3>> pts;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
-  return pts;
-}
+std::vector<std::array<double, 3>> lattice(int n) { return testing::cubicLattice(n); }
 
 // y = F x at every point, then one model evaluation (precompute, ghosts, force).
 void deform(Problem& pr, const double F[9]) {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <string>
 
+#include "Materials.hpp"
 #include "SerialProblem.hpp"
 #include "materials/Correspondence.hpp"
 
@@ -25,24 +26,11 @@ const int kN = 13;
 const long long kCentre = 6 * kN * kN + 6 * kN + 6;
 
 std::shared_ptr<MaterialModel> model(bool rate) {
-  Teuchos::ParameterList p;
-  p.set("Material Model", "Elastic Correspondence");
-  p.set("Density", 1.0);
-  p.set("Bulk Modulus", kK);
-  p.set("Shear Modulus", kG);
-  p.set("Hourglass Coefficient", 0.02);
-  p.set("Stress Integration", rate ? "Hypoelastic Rate" : "Total Lagrangian Green Strain");
-  ListReader r(p, "Materials -> M");
-  return createMaterial(r);
+  return testing::correspondence("Elastic Correspondence", kK, kG, 0.02,
+                                 rate ? "Hypoelastic Rate" : "Total Lagrangian Green Strain");
 }
 
-std::vector<std::array<double, 3>> lattice(int n) {
-  std::vector<std::array<double, 3>> pts;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
-  return pts;
-}
+std::vector<std::array<double, 3>> lattice(int n) { return testing::cubicLattice(n); }
 
 // F(t) = I + t H over t in [0, 1] in `steps` steps (velocities H x), then the centre's Cauchy
 // stress at t = 1.

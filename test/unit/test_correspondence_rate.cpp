@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 
+#include "Materials.hpp"
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
 #include "materials/Correspondence.hpp"
@@ -27,24 +28,10 @@ const int kN = 13;
 const long long kCentre = 6 * kN * kN + 6 * kN + 6;
 
 std::shared_ptr<MaterialModel> rateModel(const std::string& model, double yield = 0.0) {
-  Teuchos::ParameterList p;
-  p.set("Material Model", model);
-  p.set("Density", 1.0);
-  p.set("Bulk Modulus", kK);
-  p.set("Shear Modulus", kG);
-  p.set("Hourglass Coefficient", 0.02);
-  if (yield > 0) p.set("Yield Stress", yield);
-  ListReader r(p, "Materials -> M");
-  return createMaterial(r);
+  return testing::correspondence(model, kK, kG, 0.02, "Hypoelastic Rate", yield);
 }
 
-std::vector<std::array<double, 3>> lattice(int n) {
-  std::vector<std::array<double, 3>> pts;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
-  return pts;
-}
+std::vector<std::array<double, 3>> lattice(int n) { return testing::cubicLattice(n); }
 
 // Rotation by angle about the unit axis n (Rodrigues).
 void rotation(const double n[3], double angle, double R[9]) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Materials.hpp"
 #include "SerialProblem.hpp"
 
 namespace peridot {
@@ -96,10 +97,7 @@ TEST(VerificationV1, NormalizedPMBEnergyDensityIsExactAtEveryHorizon) {
 TEST(VerificationV1, LPSPartialStressOfAnIsotropicStretchIs3KsI) {
   const double K = 2.0e9, G = 1.1e9, s = 1e-3;
   const int n = 11;
-  std::vector<std::array<double, 3>> pts;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
+  const std::vector<std::array<double, 3>> pts = testing::cubicLattice(n);
   for (double delta : {2.0, 3.0}) {
     Teuchos::ParameterList p;
     p.set("Material Model", "Elastic");
