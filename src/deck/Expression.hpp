@@ -47,6 +47,8 @@ class Expression {
 
  private:
   class Compiler;
+  // Compiles `source_` into code_ (ExpressionCompiler.cpp); returns the stack depth it needs.
+  int compileInto(const std::string& context);
   friend Expression parseNumberOrExpression(const std::string&, const std::vector<std::string>&,
                                             const std::string&);
 
