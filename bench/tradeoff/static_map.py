@@ -14,7 +14,8 @@ problem at this strain). Errors, at the points at least two horizons inside the 
 Cost: CPU time of the run and the peak resident memory Peridot reports.
 
 Studies: PMB, normalized PMB, LPS at delta/dx = 2.015, 3.015, 4.015, 5.015; LPS with partial
-volumes. (Linearized LPS has no tangent: QuasiStatic refuses it, so it is not in this map.)
+volumes; LPS with the Conical influence function. (Linearized LPS has no tangent: QuasiStatic
+refuses it, so it is not in this map.)
 
 Usage: bench/tradeoff/static_map.py --peridot build/peridot [--workdir DIR]
        [--figure doc/figures/static_map.png] [--csv bench/tradeoff/static_map.csv] [--quick]
@@ -81,13 +82,15 @@ def cloud():
     return pts
 
 
-def deck(model, horizon, pv):
+def deck(model, horizon, pv, influence="One"):
     shear = ""
     if model == "Elastic":
         shear = "      Young's Modulus: %r\n      Poisson's Ratio: %r\n" % (E, NU)
     else:
         shear = "      Young's Modulus: %r\n" % E
     pvkey = "    Partial Volumes: true\n" if pv else ""
+    if influence != "One":
+        pvkey += "    Influence Function: %s\n" % influence
     return f"""Peridigm:
   Discretization:
     Type: Text File
@@ -146,10 +149,11 @@ def kirsch_expression():
     return ux, uy
 
 
-def run(args, label, model, ratio, pv):
+def run(args, label, model, ratio, pv, influence="One"):
     horizon = ratio + 0.015
-    here = os.path.join(args.workdir, "%s_%g%s" % (model.replace(" ", "_"), ratio,
-                                                    "_pv" if pv else ""))
+    here = os.path.join(args.workdir, "%s_%g%s%s" % (model.replace(" ", "_"), ratio,
+                                                      "_pv" if pv else "",
+                                                      "" if influence == "One" else "_" + influence))
     os.makedirs(here, exist_ok=True)
     pts = cloud()
     band = [k + 1 for k, (x, y) in enumerate(pts) if max(abs(x), abs(y)) > L - horizon]
@@ -159,7 +163,7 @@ def run(args, label, model, ratio, pv):
     with open(os.path.join(here, "band.txt"), "w") as f:
         f.write("\n".join(map(str, band)) + "\n")
     ux, uy = kirsch_expression()
-    text = deck(model, horizon, pv).replace("{UX}", ux).replace("{UY}", uy)
+    text = deck(model, horizon, pv, influence).replace("{UX}", ux).replace("{UY}", uy)
     with open(os.path.join(here, "plate.yaml"), "w") as f:
         f.write(text)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -217,6 +221,8 @@ def main():
     if not a.quick:
         for ratio in ratios:
             rows.append(run(a, "LPS, partial volumes", "Elastic", ratio, True))
+        for ratio in ratios:
+            rows.append(run(a, "LPS, Conical influence", "Elastic", ratio, False, "Conical"))
     if a.quick:
         r = rows[0]
         # The quick run is a smoke test with a real bound: LPS at 3 spacings is within 3% of
