@@ -130,15 +130,18 @@ long long DynamicRelaxation::relax(double time, long long budget) {
   std::fill(velocity_.begin(), velocity_.end(), 0.0);
   double load = evaluate(time, false);
   double damping = 0.0;
+  double initialNorm = 0.0;
   for (long long iteration = 0;; ++iteration) {
     // The criterion follows the load, but never falls below a fraction of the largest load
     // already carried: once the body has failed its reactions vanish, and a criterion relative
-    // to them could not be met.
+    // to them could not be met. Without any load (a body released from an initial deformation)
+    // it is relative to the residual the relaxation started from.
     const double norm = residualNorm();
+    if (iteration == 0) initialNorm = norm;
     double criterion = config_.tolerance;
     if (!config_.absoluteTolerance) {
       const double reference = std::max(largestLoad_, load);
-      criterion *= reference > 0 ? reference : norm;
+      criterion *= reference > 0 ? reference : initialNorm;
     }
     lastNorm_ = norm;
     lastCriterion_ = criterion;
