@@ -259,13 +259,19 @@ void RunVariables::globalVariable(const std::string& name, std::vector<double>& 
   }
   if (name == "Global_Linear_Momentum" || name == "Global_Angular_Momentum") {
     // Peridigm's definition: the magnitude of each block's total momentum, summed over blocks.
-    const std::string perPoint = name.substr(7);
+    std::vector<double> perPoint;
+    nodeVariable(name.substr(7), perPoint);  // the point values once, for all blocks
+    std::vector<double> sums(3 * s_.blocks->size(), 0.0);
+    for (std::size_t k = 0; k < s_.blocks->size(); ++k)
+      for (int i : (*s_.blocks)[k].points)
+        for (int d = 0; d < 3; ++d)
+          sums[3 * k + d] += perPoint[3 * static_cast<std::size_t>(i) + d];
+    MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM,
+                  s_.comm);
     double total = 0;
-    for (const auto& b : *s_.blocks) {
-      double v[3];
-      for (int d = 0; d < 3; ++d) v[d] = reduce(&b.points, perPoint, d, "Sum");
-      total += std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    }
+    for (std::size_t k = 0; k < s_.blocks->size(); ++k)
+      total += std::sqrt(sums[3 * k] * sums[3 * k] + sums[3 * k + 1] * sums[3 * k + 1] +
+                         sums[3 * k + 2] * sums[3 * k + 2]);
     values.push_back(total);
     return;
   }

@@ -8,6 +8,21 @@
 
 namespace peridot {
 
+namespace {
+
+// The deviator of the stress S and its squared norm dev:dev (the trial state of both returns).
+double deviator(const double* S, double* dev) {
+  const double mean = (S[0] + S[4] + S[8]) / 3.0;
+  double ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    dev[k] = S[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev[k] * dev[k];
+  }
+  return ss;
+}
+
+}  // namespace
+
 ElasticPlasticCorrespondence::ElasticPlasticCorrespondence(ListReader& p, const std::string& name,
                                                            bool hardening)
     : CorrespondenceMaterial(p, name) {
@@ -83,12 +98,8 @@ void ElasticPlasticCorrespondence::secondPiolaKirchhoff(int i, const double* E, 
   double Ee[9];
   for (int k = 0; k < 9; ++k) Ee[k] = E[k] - Ep[k];
   elasticStress(Ee, S);  // trial
-  const double mean = (S[0] + S[4] + S[8]) / 3.0;
-  double dev[9], ss = 0;
-  for (int k = 0; k < 9; ++k) {
-    dev[k] = S[k] - (k % 4 == 0 ? mean : 0.0);
-    ss += dev[k] * dev[k];
-  }
+  double dev[9];
+  const double ss = deviator(S, dev);
   const double q = std::sqrt(1.5 * ss);  // von Mises of the trial stress
   const double yieldNow = yield_[i] + hardeningModulus_ * eqps_[i];
   double* EpNew = plasticStrainNew_.data() + 9 * i;
@@ -112,12 +123,9 @@ void ElasticPlasticCorrespondence::unrotatedCauchyStress(int i, const double* d,
                                                          const double* sigmaN, double* sigma) {
   const double G = constants_.shearModulus;
   correspondence::hypoelasticIncrement(lame_, G, d, dt, sigmaN, sigma);  // trial
-  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
-  double dev[9], ss = 0;
-  for (int k = 0; k < 9; ++k) {
-    dev[k] = sigma[k] - (k % 4 == 0 ? mean : 0.0);
-    ss += dev[k] * dev[k];
-  }
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;  // kept by the radial return
+  double dev[9];
+  const double ss = deviator(sigma, dev);
   const double q = std::sqrt(1.5 * ss);  // von Mises of the trial stress
   const double yieldNow = yield_[i] + hardeningModulus_ * eqps_[i];
   if (q <= yieldNow || !(ss > 0)) {

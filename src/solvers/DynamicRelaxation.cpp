@@ -31,34 +31,17 @@ DynamicRelaxation::DynamicRelaxation(const DynamicRelaxationConfig& config, Solv
   if (c_.planar)
     for (int i = 0; i < n; ++i) held_[3 * i + 2] = 1.0;
   force_.assign(n3, 0.0);
+  terms3_.assign(n3, 0.0);  // swapped with force_ every iteration: the same size
   velocity_.assign(n3, 0.0);
   terms_.assign(n, 0.0);
   terms2_.assign(n, 0.0);
 
-  // K v by central differences of the force about the current configuration, bonds frozen: the
-  // probe is 1e-6 of the smallest horizon at its largest component (linear to round-off).
-  double smallestHorizon = n > 0 ? t.horizon[0] : 1e300;
-  for (int i = 0; i < n; ++i) smallestHorizon = std::min(smallestHorizon, t.horizon[i]);
-  MPI_Allreduce(MPI_IN_PLACE, &smallestHorizon, 1, MPI_DOUBLE, MPI_MIN, c_.comm);
-  const std::vector<double> savedY(c_.y, c_.y + 3 * t.numOverlap);
-  const std::vector<double> savedF(c_.f, c_.f + n3);
-  std::vector<double> plus(n3);
-  auto applyStiffness = [&](const double* v, double* kv) {
-    double largest = 0;
-    for (int k = 0; k < n3; ++k) largest = std::max(largest, std::fabs(v[k]));
-    MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, c_.comm);
-    const double eps = largest > 0 ? 1e-6 * smallestHorizon / largest : 0.0;
-    for (int k = 0; k < n3; ++k) c_.y[k] = c_.x[k] + c_.u[k] + eps * v[k];
-    c_.evaluator->evaluate(0.0, false);
-    std::copy(c_.f, c_.f + n3, plus.begin());
-    for (int k = 0; k < n3; ++k) c_.y[k] = c_.x[k] + c_.u[k] - eps * v[k];
-    c_.evaluator->evaluate(0.0, false);
-    for (int k = 0; k < n3; ++k) kv[k] = eps > 0 ? -(plus[k] - c_.f[k]) / (2.0 * eps) : 0.0;
-  };
+  // lambda_max of the stiffness about the configuration the solver starts from, bonds frozen.
+  std::vector<double> current(n3);
+  for (int k = 0; k < n3; ++k) current[k] = c_.x[k] + c_.u[k];
   const VerletLimitResult r =
-      estimateVerletLimit(t, c_.density, c_.volume, c_.planar ? 2 : 3, applyStiffness);
-  std::copy(savedY.begin(), savedY.end(), c_.y);
-  std::copy(savedF.begin(), savedF.end(), c_.f);
+      estimateVerletLimitAbout(*c_.topology, *c_.evaluator, current.data(), c_.y, c_.f, c_.density,
+                               c_.volume, c_.planar ? 2 : 3);
   // The unit step is stable for the undamped iteration when every eigenvalue of Lambda^-1 K is
   // at most 4: Lambda = s lambda_max rho / 4 with s > 1 (Kilic & Madenci bound the eigenvalue
   // by a row sum instead, which is up to twice larger: slower convergence for nothing). The
@@ -158,13 +141,13 @@ long long DynamicRelaxation::relax(double time, long long budget) {
     const double keep = iteration == 0 ? 0.0 : (2.0 - damping) / (2.0 + damping);
     const double push = iteration == 0 ? 0.5 : 2.0 / (2.0 + damping);
     std::vector<double>& previousForce = terms3_;
-    previousForce = force_;
     for (int i = 0; i < n; ++i)
       for (int d = 0; d < 3; ++d) {
         const int k = 3 * i + d;
         velocity_[k] = keep * velocity_[k] + push * force_[k] / lambda_[i];
         c_.u[k] += velocity_[k];
       }
+    previousForce.swap(force_);  // evaluate() refills every entry of force_
     load = evaluate(time, false);
     // Damping: twice the square root of the Rayleigh quotient of the local diagonal stiffness
     // k_kk = -(a_k^new - a_k^old) / v_k (the lowest frequency the iteration now excites).
@@ -229,6 +212,7 @@ void DynamicRelaxation::run() {
     long long iterations = 0;
     int relaxations = 0;
     const double damageBefore = damageSum();
+    double damage = damageBefore;
     for (;;) {
       ++relaxations;
       const long long taken = relax(time, config_.maxIterations - iterations);
@@ -250,11 +234,12 @@ void DynamicRelaxation::run() {
       }
       iterations += taken;
       // Bonds break at the relaxed state; if any did, the state is no longer in equilibrium.
-      const double damage = damageSum();
       evaluate(time, true);
-      if (!(damageSum() > damage)) break;
+      const double now = damageSum();
+      if (!(now > damage)) break;
+      damage = now;
     }
-    const double damageGrowth = damageSum() - damageBefore;
+    const double damageGrowth = damage - damageBefore;
     stats_.iterations += iterations;
     stats_.iterationsPerStep.push_back(iterations);
     stats_.relaxationsPerStep.push_back(relaxations);

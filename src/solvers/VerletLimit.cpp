@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "evaluator/ModelEvaluator.hpp"
 #include "parallel/ExactSum.hpp"
 
 namespace peridot {
@@ -149,6 +150,35 @@ VerletLimitResult estimateVerletLimit(
   const double lambda = result.lambdaMax + std::min(result.residual, result.lambdaMax);
   result.stableStep = lambda > 0 ? 2.0 / std::sqrt(lambda) : 0.0;
   return result;
+}
+
+VerletLimitResult estimateVerletLimitAbout(const Topology& t, ModelEvaluator& evaluator,
+                                           const double* base, double* y, double* f,
+                                           const double* density, const double* volume,
+                                           int dimension) {
+  const int n3 = 3 * t.numOwned;
+  double smallestHorizon = t.numOwned > 0 ? t.horizon[0] : 1e300;
+  for (int i = 0; i < t.numOwned; ++i) smallestHorizon = std::min(smallestHorizon, t.horizon[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &smallestHorizon, 1, MPI_DOUBLE, MPI_MIN, t.comm);
+  const std::vector<double> savedY(y, y + 3 * t.numOverlap);
+  const std::vector<double> savedF(f, f + n3);
+  std::vector<double> plus(n3);
+  auto applyStiffness = [&](const double* v, double* kv) {
+    double largest = 0;
+    for (int k = 0; k < n3; ++k) largest = std::max(largest, std::fabs(v[k]));
+    MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, t.comm);
+    const double eps = largest > 0 ? 1e-6 * smallestHorizon / largest : 0.0;
+    for (int k = 0; k < n3; ++k) y[k] = base[k] + eps * v[k];
+    evaluator.evaluate(0.0, false);
+    std::copy(f, f + n3, plus.begin());
+    for (int k = 0; k < n3; ++k) y[k] = base[k] - eps * v[k];
+    evaluator.evaluate(0.0, false);
+    for (int k = 0; k < n3; ++k) kv[k] = eps > 0 ? -(plus[k] - f[k]) / (2.0 * eps) : 0.0;
+  };
+  const VerletLimitResult r = estimateVerletLimit(t, density, volume, dimension, applyStiffness);
+  std::copy(savedY.begin(), savedY.end(), y);
+  std::copy(savedF.begin(), savedF.end(), f);
+  return r;
 }
 
 }  // namespace peridot

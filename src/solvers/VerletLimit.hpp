@@ -33,6 +33,19 @@ VerletLimitResult estimateVerletLimit(
     const std::function<void(const double*, double*)>& applyStiffness, int maxIterations = 300,
     double tolerance = 1e-9);
 
+class ModelEvaluator;
+
+// The same estimate for the model's linearization about the configuration `base` (3 per owned
+// point: the reference coordinates for the time step, x + u for dynamic relaxation): K v by
+// central differences of the evaluator's internal force, y = base +- eps v with eps max|v| =
+// 1e-6 of the smallest horizon (linear to round-off there, no critical stretch reached) and no
+// bond breaking. `y` (overlap) and `f` (owned) are the evaluator's current coordinates and force
+// density; both are restored. Collective.
+VerletLimitResult estimateVerletLimitAbout(const Topology& topology, ModelEvaluator& evaluator,
+                                           const double* base, double* y, double* f,
+                                           const double* density, const double* volume,
+                                           int dimension);
+
 // Largest eigenvalue of the symmetric tridiagonal matrix (alpha on the diagonal, beta below),
 // by bisection on the Sturm sequence. Exposed for tests.
 double largestTridiagonalEigenvalue(const double* alpha, const double* beta, int n);

@@ -3,6 +3,7 @@
 // "Plane Strain"; Poisson's ratio is set only when nu > -1 (bond-based models have their own).
 #include <Teuchos_ParameterList.hpp>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +52,19 @@ inline std::vector<std::array<double, 3>> cubicLattice(int n) {
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) pts.push_back({double(i), double(j), double(k)});
   return pts;
+}
+
+// Rotation by angle about the unit axis n (Rodrigues), row-major.
+inline void rodriguesRotation(const double n[3], double angle, double R[9]) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) R[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * n[a] * n[b];
+  R[1] -= s * n[2];
+  R[2] += s * n[1];
+  R[3] += s * n[2];
+  R[5] -= s * n[0];
+  R[6] -= s * n[1];
+  R[7] += s * n[0];
 }
 
 }  // namespace testing

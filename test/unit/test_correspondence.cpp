@@ -66,17 +66,8 @@ void expectTensorNear(const double* actual, const double* expected, double toler
   if (scale > 0) std::printf("  %s: max |error| / scale = %.2e\n", what.c_str(), worst / scale);
 }
 
-// Rotation by angle about the unit axis n (Rodrigues).
 void rotation(const double n[3], double angle, double R[9]) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) R[3 * a + b] = (a == b ? c : 0.0) + (1 - c) * n[a] * n[b];
-  R[1] -= s * n[2];
-  R[2] += s * n[1];
-  R[3] += s * n[2];
-  R[5] -= s * n[0];
-  R[6] -= s * n[1];
-  R[7] += s * n[0];
+  testing::rodriguesRotation(n, angle, R);
 }
 
 class ElasticCorrespondenceLattice : public ::testing::Test {
