@@ -46,6 +46,9 @@ set_tests_properties(example_v4_long PROPERTIES LABELS "long;example" TIMEOUT 36
 add_test(NAME example_v5_long COMMAND bash ${PROJECT_SOURCE_DIR}/examples/v5_glass_plate/run.sh)
 set_tests_properties(example_v5_long PROPERTIES LABELS "long;example" TIMEOUT 3600
   ENVIRONMENT "${PERIDOT_FRACTURE_ENV};WORK=${CMAKE_CURRENT_BINARY_DIR}/fracture/v5_long;NP=2;CHECK=0.4 0.9")
+add_test(NAME example_v8_long COMMAND bash ${PROJECT_SOURCE_DIR}/examples/cki_mode_i/run.sh)
+set_tests_properties(example_v8_long PROPERTIES LABELS "long;example" TIMEOUT 5400
+  ENVIRONMENT "${PERIDOT_FRACTURE_ENV};WORK=${CMAKE_CURRENT_BINARY_DIR}/fracture/v8_long;NP=2")
 add_test(NAME example_v10_long COMMAND bash ${PROJECT_SOURCE_DIR}/examples/cki_sphere_impact/run.sh)
 set_tests_properties(example_v10_long PROPERTIES LABELS "long;example" TIMEOUT 3600
   ENVIRONMENT "${PERIDOT_FRACTURE_ENV};WORK=${CMAKE_CURRENT_BINARY_DIR}/fracture/v10_long")
