@@ -7,8 +7,8 @@
 //      p' = K D,  q' = 2 mu D - 3 mu sign(q) epsdot_p,  D = edot / (1 + e),
 //      epsdot_p = epsdot_0 (|q| / g(eps_p))^(1/m) where |q| >= sigma_Y, else 0;
 //  - the model's time-discrete scheme as a scalar recursion (backward Euler, d_xx dt = De / (1 +
-//    e_n+1)), its return solved for the new stress by bisection (the model solves for the plastic
-//    increment by Newton).
+//    e_n+1); test/common/NeedlemanGold.hpp), its return solved for the new stress by bisection
+//    (the model solves for the plastic increment by Newton).
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
@@ -18,6 +18,7 @@
 #include <string>
 
 #include "Materials.hpp"
+#include "NeedlemanGold.hpp"
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
 #include "materials/Correspondence.hpp"
@@ -34,20 +35,10 @@ const int kN = 7;
 const long long kCentre = 3 * kN * kN + 3 * kN + 3;
 const double kHorizon = 2.015;
 
-// The law's constants (the deck's keys).
-struct Law {
-  double sigmaY = 1e-3;  // Yield Stress
-  double N = 0.1;        // Strain Hardening Exponent
-  double m = 0.05;       // Rate Hardening Exponent
-  double rate0 = 1e-3;   // Reference Strain Rate
-  double eps0 = 1e-3;    // Reference Strain 0
-  double eps1 = 5e-3;    // Reference Strain 1
-};
+using Law = testing::NeedlemanLaw;
+using testing::Uniaxial;
 
-// g(eps_p) = sigma_Y (1 + eps_p / eps_0)^N / (1 + (eps_p / eps_1)^2)
-double hardening(const Law& l, double e) {
-  return l.sigmaY * std::pow(1.0 + e / l.eps0, l.N) / (1.0 + (e / l.eps1) * (e / l.eps1));
-}
+double hardening(const Law& l, double e) { return testing::needlemanHardening(l, e); }
 
 Teuchos::ParameterList deck(const Law& l) {
   Teuchos::ParameterList p;
@@ -82,37 +73,8 @@ void stretchTo(Problem& pr, double e, double edot, double dt) {
   pr.evaluateAffine(F, Fdot, dt);
 }
 
-// The scalar state of uniaxial stretch: sigma = p I + q diag(2/3, -1/3, -1/3).
-struct Uniaxial {
-  double p = 0, q = 0, eqps = 0;
-  double sxx() const { return p + 2.0 * q / 3.0; }
-  double syy() const { return p - q / 3.0; }
-};
-
-// One step of the time-discrete scheme: the elastic trial with delta = d_xx dt, then, if |q*| >=
-// sigma_Y, the new von Mises stress s in [0, |q*|] with s = g(eps_p + Deps) (Deps / (epsdot_0
-// dt))^m, Deps = (|q*| - s) / (3 mu), by bisection. Returns whether the step flowed.
 bool discreteStep(const Law& l, Uniaxial& u, double delta, double dt) {
-  u.p += kK * delta;
-  const double qt = u.q + 2 * kG * delta, qa = std::abs(qt);
-  u.q = qt;
-  if (qa < l.sigmaY) return false;
-  auto excess = [&](double s) {  // increasing in s; its root is the new stress
-    const double de = (qa - s) / (3 * kG);
-    const double rate = l.m > 0 ? std::pow(de / (l.rate0 * dt), l.m) : 1.0;
-    return s - hardening(l, u.eqps + de) * rate;
-  };
-  if (excess(qa) <= 0) return false;  // (m = 0 only) inside the hardened surface
-  double lo = 0, hi = qa;
-  for (int k = 0; k < 200 && hi - lo > 0; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (excess(mid) > 0 ? hi : lo) = mid;
-  }
-  const double s = 0.5 * (lo + hi);
-  u.eqps += (qa - s) / (3 * kG);
-  u.q = qt > 0 ? s : -s;
-  return true;
+  return testing::needlemanStep(l, kK, kG, u, delta, dt);
 }
 
 // The continuum ODE by RK4 from t0 to t1 in `substeps` steps along e(t) = e0 + edot (t - t0).
@@ -167,13 +129,13 @@ StretchResult stretch(const Law& l, double eFinal, double edot, int steps) {
     integrateODE(l, ode, ePrevious, edot, (n - 1) * dt, n * dt, 1000);
     const double* sigma = at(pr, "Cauchy_Stress");
     const double eq = *at(pr, "Equivalent_Plastic_Strain", 1);
-    EXPECT_NEAR(sigma[0], discrete.sxx(), 1e-10 * l.sigmaY) << "step " << n;
-    EXPECT_NEAR(sigma[4], discrete.syy(), 1e-10 * l.sigmaY) << "step " << n;
+    EXPECT_NEAR(sigma[0], discrete.axial(), 1e-10 * l.sigmaY) << "step " << n;
+    EXPECT_NEAR(sigma[4], discrete.lateral(), 1e-10 * l.sigmaY) << "step " << n;
     EXPECT_NEAR(eq, discrete.eqps, 1e-10 * l.sigmaY / kG) << "step " << n;
-    r.worstDiscrete = std::max(r.worstDiscrete, std::abs(sigma[0] - discrete.sxx()) / l.sigmaY);
-    r.worstODE = std::max(r.worstODE, std::abs(sigma[0] - ode.sxx()) / l.sigmaY);
+    r.worstDiscrete = std::max(r.worstDiscrete, std::abs(sigma[0] - discrete.axial()) / l.sigmaY);
+    r.worstODE = std::max(r.worstODE, std::abs(sigma[0] - ode.axial()) / l.sigmaY);
     if (n == steps) {
-      r.finalODE = std::abs(sigma[0] - ode.sxx()) / l.sigmaY;
+      r.finalODE = std::abs(sigma[0] - ode.axial()) / l.sigmaY;
       r.finalQ = sigma[0] - sigma[4];
       r.finalEqps = eq;
       r.odeQ = ode.q;
@@ -244,7 +206,7 @@ TEST(ViscoplasticNeedlemanCorrespondence, LoadUnloadReverseYield) {
     if (!loading && flowed && gold.q < 0) ++reversePlastic;
     const double* sigma = at(pr, "Cauchy_Stress");
     const double eq = *at(pr, "Equivalent_Plastic_Strain", 1);
-    EXPECT_NEAR(sigma[0], gold.sxx(), 1e-10 * l.sigmaY) << "step " << n;
+    EXPECT_NEAR(sigma[0], gold.axial(), 1e-10 * l.sigmaY) << "step " << n;
     EXPECT_NEAR(eq, gold.eqps, 1e-10 * l.sigmaY / kG) << "step " << n;
     EXPECT_GE(eq, lastEqps) << "plastic strain decreased at step " << n;
     if (!flowed && !loading) {
