@@ -141,7 +141,7 @@ peridot_baddeck(unknown_material_model DECK unknown_material_model.yaml
 peridot_baddeck(unknown_damage_model DECK unknown_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: unknown damage model "Critical Strain"]])
 peridot_baddeck(unsupported_material_model DECK unsupported_material_model.yaml
-  EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Viscoplastic Needleman Correspondence" is not supported by Peridot yet]])
+  EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Multiphysics Elastic" is not supported by Peridot yet]])
 peridot_baddeck(unsupported_damage_model DECK unsupported_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: the Peridigm damage model "Johnson Cook" is not supported by Peridot yet]])
 peridot_baddeck(ebb_two_constants DECK ebb_two_constants.yaml

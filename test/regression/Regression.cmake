@@ -76,6 +76,12 @@ peridot_identical(CorrespondenceCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/deck
                   CorrespondenceCube.xml CorrespondenceCube.e exact_correspondence.comp 2744)
 peridot_identical(CorrespondenceBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/CorrespondenceBar
                   CorrespondenceBar.xml CorrespondenceBar.e exact_correspondence.comp 0)
+# Viscoplastic Needleman Correspondence with a flaw: bitwise equal at 1-4 ranks; every point is
+# also checked against a scalar return with its own yield stress (test/mpi/test_needleman_cube.cpp).
+peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanCube
+                  NeedlemanCube.xml NeedlemanCube.e exact_correspondence.comp 1728)
+peridot_identical(NeedlemanBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanBar
+                  NeedlemanBar.xml NeedlemanBar.e exact_correspondence.comp 0)
 peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
                   ViscoBar.xml ViscoBar.e exact_visco.comp 0)
 # Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent
