@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
+#include "solvers/NOXQuasiStatic.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
@@ -63,6 +64,9 @@ void Simulation::checkImplicit() {
   } else if (config_.solver.dynamicRelaxation) {
     relaxation_ =
         std::make_unique<DynamicRelaxation>(config_.solver.dynamicRelaxationConfig, context);
+  } else if (config_.solver.noxQuasiStatic) {
+    noxQuasiStatic_ =
+        std::make_unique<NOXQuasiStatic>(config_.solver.noxQuasiStaticConfig, context);
   } else {
     quasiStatic_ = std::make_unique<QuasiStatic>(config_.solver.quasiStaticConfig, context);
   }
@@ -88,12 +92,16 @@ void Simulation::runImplicit() {
   if (relaxation_) {
     relaxation_->setRunHooks(outputs_.get(), observer_);
     relaxation_->run();
+  } else if (noxQuasiStatic_) {
+    noxQuasiStatic_->setRunHooks(outputs_.get(), observer_);
+    noxQuasiStatic_->run();
   } else {
     quasiStatic_->setRunHooks(outputs_.get(), observer_);
     quasiStatic_->run();
   }
-  const auto& times = relaxation_ ? config_.solver.dynamicRelaxationConfig.times
-                                  : config_.solver.quasiStaticConfig.times;
+  const auto& times = relaxation_       ? config_.solver.dynamicRelaxationConfig.times
+                      : noxQuasiStatic_ ? config_.solver.noxQuasiStaticConfig.times
+                                        : config_.solver.quasiStaticConfig.times;
   lastStep_ = stepOffset_ + static_cast<long long>(times.size()) - 1;
   time_ = times.back();
 }
