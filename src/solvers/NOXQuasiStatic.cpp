@@ -21,8 +21,12 @@ namespace peridot {
 
 namespace {
 using MV = Tpetra::MultiVector<double, LocalOrdinal, GlobalOrdinal>;
-// NOX's matrix-free perturbation: eta = lambda (lambda + ||x|| / ||v||).
-const double kMatrixFreeLambda = 1e-6;
+// The matrix-free difference step: eta = sqrt(machine epsilon) ||y|| / ||v||, y the current
+// coordinates, so that every component moves by ~1e-8 of the coordinates. NOX's own choice,
+// lambda (lambda + ||x|| / ||v||), scales with the unknowns, here displacements, which can be
+// 1e-9 of the coordinates: the difference of two forces would then be mostly rounding (the
+// forces are computed from y = X + u).
+const double kSqrtEpsilon = 1.4901161193847656e-08;
 }  // namespace
 
 // K v by a forward difference of the residual (K = -dF/du): the Krylov solver's operator when
@@ -114,6 +118,16 @@ long long NOXQuasiStatic::linearize(const TpetraVector& x, const TpetraVector& f
     baseX_ = baseXStore_.get();
     baseF_ = baseFStore_.get();
     heldScratch_.assign(problem_.held(), problem_.held() + 3 * c_.topology->numOwned);
+    // ||X + u|| at the linearization point (the difference step's scale).
+    const auto u = x.getData(0);
+    double local = 0;
+    for (int k = 0; k < 3 * c_.topology->numOwned; ++k) {
+      const double y = c_.x[k] + u[k];
+      local += y * y;
+    }
+    MPI_Allreduce(&local, &coordinateNorm_, 1, MPI_DOUBLE, MPI_SUM, c_.comm);
+    coordinateNorm_ = std::sqrt(coordinateNorm_);
+    if (!(coordinateNorm_ > 0)) coordinateNorm_ = 1.0;
     if (linearization_ == 0) heldDiagonal_ = problem_.heldDiagonal();
   } else {
     assembleTangentAt(x);
@@ -135,7 +149,7 @@ void NOXQuasiStatic::matrixFreeStiffness(const TpetraVector& in, TpetraVector& o
   if (normV == 0.0) {
     out.putScalar(0.0);
   } else {
-    const double eta = kMatrixFreeLambda * (kMatrixFreeLambda + baseX_->norm2() / normV);
+    const double eta = kSqrtEpsilon * coordinateNorm_ / normV;
     TpetraVector perturbed(scratch_->getMap());
     perturbed.update(1.0, *baseX_, eta, *scratch_, 0.0);
     evaluateAt(perturbed);

@@ -65,6 +65,7 @@ class NOXQuasiStatic : public NOXProblem {
   Teuchos::RCP<TpetraOperator> preconditioner_;
   int preconditionerAge_ = 0;
   double heldDiagonal_ = 1.0;
+  double coordinateNorm_ = 1.0;  // ||X + u|| at the matrix-free linearization point
   long long linearization_ = 0;
   TpetraVector* baseX_ = nullptr;  // matrix-free linearization point and its residual
   TpetraVector* baseF_ = nullptr;
