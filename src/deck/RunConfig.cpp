@@ -459,6 +459,14 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   RunConfig config;
   ListReader top(deck, "");
   config.verbose = top.boolean("Verbose", false);
+  // Peridigm's RKPM (reproducing kernel particle method) decks: a meshfree discretization of
+  // local continuum mechanics, not peridynamics; refused before anything else reads the deck.
+  if (top.has("RKPM Kernels")) {
+    throw InputError("RKPM Kernels",
+                     "Peridigm's RKPM discretization (reproducing kernel particle method, a "
+                     "meshfree discretization of local continuum mechanics, not peridynamics) is "
+                     "not supported by Peridot");
+  }
   config.discretization = readDiscretizationConfig(top.sublist("Discretization"));
 
   ListReader materials = top.sublist("Materials");
