@@ -3,7 +3,9 @@
 end layers (uniaxial strain 1e-3 at t = 1, lateral contraction nu = 0.25 on the layers), in one
 load step. Usage: make_deck.py NX NY NZ PRECONDITIONER OUT.xml [SOLVER]; SOLVER is QuasiStatic
 (the default) or a NOXQuasiStatic variant: nox-newton (assembled tangent, CG), nox-newton-mf
-(matrix-free, GMRES), nox-nlcg (NonlinearCG preconditioned by PRECONDITIONER)."""
+(matrix-free, GMRES), nox-nlcg (NonlinearCG preconditioned by PRECONDITIONER, rebuilt at every
+iteration), nox-nlcg-mf (the same with matrix-free Jacobian products and the preconditioner
+rebuilt every 20 iterations)."""
 import sys
 
 nx, ny, nz = (int(a) for a in sys.argv[1:4])
@@ -44,13 +46,17 @@ if solver == "QuasiStatic":
   </ParameterList>
 """
 else:
-    if solver == "nox-nlcg":
-        direction = """        <Parameter name="Method" type="string" value="NonlinearCG"/>
+    age = 1
+    if solver in ("nox-nlcg", "nox-nlcg-mf"):
+        mf = solver == "nox-nlcg-mf"
+        age = 20 if mf else 1
+        direction = f"""        <Parameter name="Method" type="string" value="NonlinearCG"/>
         <ParameterList name="Nonlinear CG">
           <Parameter name="Restart Frequency" type="int" value="50"/>
           <Parameter name="Precondition" type="string" value="On"/>
           <Parameter name="Orthogonalize" type="string" value="Polak-Ribiere"/>
           <ParameterList name="Linear Solver">
+            <Parameter name="Jacobian Operator" type="string" value="{'Matrix-Free' if mf else 'Use Jacobian'}"/>
             <Parameter name="Preconditioner" type="string" value="User Defined"/>
           </ParameterList>
         </ParameterList>
@@ -64,7 +70,7 @@ else:
             <Parameter name="Jacobian Operator" type="string" value="{'Matrix-Free' if mf else 'Use Jacobian'}"/>
             <Parameter name="Aztec Solver" type="string" value="{'GMRES' if mf else 'CG'}"/>
             <Parameter name="Preconditioner" type="string" value="{'None' if preconditioner == 'None' else 'User Defined'}"/>
-            <Parameter name="Tolerance" type="double" value="{1e-7 if mf else 1e-8}"/>
+            <Parameter name="Tolerance" type="double" value="{1e-6 if mf else 1e-8}"/>
             <Parameter name="Max Iterations" type="int" value="20000"/>
             <Parameter name="Size of Krylov Subspace" type="int" value="500"/>
           </ParameterList>
@@ -75,7 +81,7 @@ else:
       <Parameter name="Number of Load Steps" type="int" value="1"/>
       <Parameter name="Relative Tolerance" type="double" value="1.0e-6"/>
       <Parameter name="Max Solver Iterations" type="int" value="{iterations}"/>
-      <Parameter name="Max Age Of Prec" type="int" value="1"/>
+      <Parameter name="Max Age Of Prec" type="int" value="{age}"/>
       <ParameterList name="Direction">
 {direction}      </ParameterList>
       <ParameterList name="Line Search">

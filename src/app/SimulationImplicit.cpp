@@ -11,23 +11,26 @@ namespace peridot {
 
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
-    throw InputError(config_.restart.path,
-                     "Restart with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
-                     "solvers is not supported yet");
+    throw InputError(
+        config_.restart.path,
+        "Restart with the QuasiStatic, NOXQuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+        "solvers is not supported yet");
   }
   if (contact_) {
-    throw InputError(config_.contact.path,
-                     "contact with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
-                     "solvers is not supported (nor by Peridigm)");
+    throw InputError(
+        config_.contact.path,
+        "contact with the QuasiStatic, NOXQuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+        "solvers is not supported (nor by Peridigm)");
   }
   if (config_.solver.loadStepped()) {
     for (const auto& b : blocks_)
       if (b.damage && b.damage->integratesInTime()) {
-        throw InputError(config_.solver.path,
-                         "the damage model \"" + b.damageName + "\" of block " + b.name +
-                             " integrates over time (LSJ-T), which a load-stepped solver "
-                             "(QuasiStatic, Adaptive Dynamic Relaxation) does not have: its "
-                             "damage would never grow; use Verlet or Implicit");
+        throw InputError(
+            config_.solver.path,
+            "the damage model \"" + b.damageName + "\" of block " + b.name +
+                " integrates over time (LSJ-T), which a load-stepped solver "
+                "(QuasiStatic, NOXQuasiStatic, Adaptive Dynamic Relaxation) does not have: its "
+                "damage would never grow; use Verlet or Implicit");
       }
   }
   // The solver and its tangent are built here, so that a material without a tangent stops the

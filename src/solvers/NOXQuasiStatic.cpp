@@ -267,13 +267,14 @@ void NOXQuasiStatic::run() {
   printing.set("MyPID", c_.rank);
   printing.set("Output Processor", config_.outputProcessor);
   printing.set("Output Precision", config_.outputPrecision);
-  printing.set("Output Information",
-               config_.verbose
-                   ? NOX::Utils::OuterIteration + NOX::Utils::OuterIterationStatusTest +
-                         NOX::Utils::InnerIteration + NOX::Utils::LinearSolverDetails +
-                         NOX::Utils::Parameters + NOX::Utils::Details + NOX::Utils::Warning +
-                         NOX::Utils::TestDetails + NOX::Utils::Error
-                   : NOX::Utils::Error);
+  // Peridigm's choice: everything with Verbose, else errors and the status tests' results.
+  int information = NOX::Utils::Error + NOX::Utils::TestDetails;
+  if (config_.verbose) {
+    information += NOX::Utils::OuterIteration + NOX::Utils::OuterIterationStatusTest +
+                   NOX::Utils::InnerIteration + NOX::Utils::LinearSolverDetails +
+                   NOX::Utils::Parameters + NOX::Utils::Details + NOX::Utils::Warning;
+  }
+  printing.set("Output Information", information);
   printing.set("Output Stream", Teuchos::rcpFromRef(log));
   printing.set("Error Stream", Teuchos::rcpFromRef(log));
   const bool hasDamage = c_.evaluator->state().bondDamage != nullptr;
