@@ -147,7 +147,12 @@ int solveLinearSystem(const Teuchos::RCP<const TpetraOperator>& A,
     for (std::size_t k = 0; k < rhs.size(); ++k) b[k] = rhs[k];
   }
   auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
-  if (!preconditioner.is_null()) problem->setLeftPrec(preconditioner);
+  if (!preconditioner.is_null()) {
+    if (settings.rightPreconditioning)
+      problem->setRightPrec(preconditioner);
+    else
+      problem->setLeftPrec(preconditioner);
+  }
   if (settings.solver == "BlockCG") problem->setHermitian();
   problem->setProblem();
   auto params = Teuchos::rcp(new Teuchos::ParameterList);

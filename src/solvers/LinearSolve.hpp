@@ -23,6 +23,9 @@ struct LinearSolverSettings {
   std::string orthogonalization;
   int sweeps = 1;
   int levelOfFill = 0;
+  // Right preconditioning (GMRES then measures the true residual): for matrix-free operators,
+  // whose products carry a noise floor that a left-preconditioned residual hides.
+  bool rightPreconditioning = false;
 };
 
 using TpetraOperator = Tpetra::Operator<double, LocalOrdinal, GlobalOrdinal>;
@@ -34,7 +37,8 @@ using TpetraOperator = Tpetra::Operator<double, LocalOrdinal, GlobalOrdinal>;
 Teuchos::RCP<TpetraOperator> makePreconditioner(const Teuchos::RCP<CrsMatrix>& A,
                                                 const LinearSolverSettings& settings);
 
-// Solves A x = rhs with the Krylov solver of `settings`, left-preconditioned by M when not null;
+// Solves A x = rhs with the Krylov solver of `settings`, preconditioned by M when not null (on
+// the left unless settings.rightPreconditioning);
 // A is any operator on the owned map (an assembled tangent or a matrix-free one). Held
 // components (held[k] != 0) of x are zeroed. Returns the iterations, or -1 when not converged.
 int solveLinearSystem(const Teuchos::RCP<const TpetraOperator>& A,

@@ -211,6 +211,7 @@ bool NOXQuasiStatic::solveJacobian(const TpetraVector& in, TpetraVector& out, do
   LinearSolverSettings settings = config_.linear;
   settings.tolerance = tolerance;
   settings.printStatus = config_.verbose;
+  settings.rightPreconditioning = config_.matrixFree;
   const double* held = config_.matrixFree ? heldScratch_.data() : problem_.held();
   Teuchos::RCP<const TpetraOperator> A;
   if (config_.matrixFree)

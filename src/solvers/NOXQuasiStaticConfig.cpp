@@ -177,6 +177,12 @@ NOXQuasiStaticConfig readNOXQuasiStatic(ListReader& nox, double initialTime, dou
   NOXQuasiStaticConfig c;
   c.path = nox.path();
   c.peridigmPreconditioner = preconditioner;
+  // NOX's AztecOO defaults, for a direction without a Linear Solver list.
+  c.linear.solver = "BlockGMRES";
+  c.linear.preconditioner = "None";
+  c.linear.maxIterations = 400;
+  c.linear.tolerance = 1e-4;
+  c.linear.krylovSize = 300;
   c.times = readLoadSteps(nox, initialTime, finalTime, finalTimeGiven);
   c.verbose = nox.boolean("Verbose", false) || solverVerbose;
   if (nox.has("Absolute Tolerance")) {
