@@ -26,6 +26,7 @@
 namespace peridot {
 
 class QuasiStatic;
+class NOXQuasiStatic;
 class DynamicRelaxation;
 class Implicit;
 
@@ -69,6 +70,7 @@ class Simulation {
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
   QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
+  NOXQuasiStatic* noxQuasiStatic() { return noxQuasiStatic_.get(); }
   // The Adaptive Dynamic Relaxation solver of the last run() (null for the others).
   DynamicRelaxation* dynamicRelaxation() { return relaxation_.get(); }
   // The Implicit (Newmark) solver of the last run() (null for the others).
@@ -132,6 +134,7 @@ class Simulation {
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
   std::unique_ptr<QuasiStatic> quasiStatic_;
+  std::unique_ptr<NOXQuasiStatic> noxQuasiStatic_;
   std::unique_ptr<DynamicRelaxation> relaxation_;
   std::unique_ptr<Implicit> implicit_;
   double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_

@@ -8,6 +8,7 @@
 
 #include "solvers/QuasiStaticConfig.hpp"
 #include "solvers/SolverContext.hpp"
+#include "solvers/StaticProblem.hpp"
 #include "solvers/Tangent.hpp"
 
 namespace peridot {
@@ -34,23 +35,20 @@ class QuasiStatic {
   Tangent& tangent() { return *tangent_; }
   // For tests: evaluates the forces at y = x + u (collective) and returns ||R||; assembles the
   // tangent at the state of the last evaluation. residual(): R = V (f + b), owned.
-  double evaluate(double time) { return evaluateResidual(time); }
-  void assembleTangent() { tangent_->assemble(c_.evaluator->state(), *c_.blocks, held_, 1.0); }
-  const std::vector<double>& residual() const { return residual_; }
+  double evaluate(double) { return problem_.evaluateResidual(); }
+  void assembleTangent() {
+    tangent_->assemble(c_.evaluator->state(), *c_.blocks, problem_.held(), 1.0);
+  }
+  const std::vector<double>& residual() const { return problem_.residual(); }
 
  private:
-  double evaluateResidual(double time);  // evaluate forces at y = x + u; returns ||R||
-  void updateHeld();
-  double heldDiagonal() const;
   int solveLinear(bool precondition);  // -1: not converged
-  double lineSearch(double residualNorm, double time);
+  double lineSearch(double residualNorm);
 
   QuasiStaticConfig config_;
   SolverContext c_;
+  StaticProblem problem_;  // residual R = V (f + b), held degrees of freedom
   std::unique_ptr<Tangent> tangent_;
-  double* held_ = nullptr;          // overlap, 3 per point
-  std::vector<double> baseHeld_;    // owned: prescribed and planar z
-  std::vector<double> residual_;    // owned, 3 per point: R = V (f + b), 0 where held
   std::vector<double> increment_;   // owned: the Newton direction
   std::vector<double> start_;       // owned: u at the start of the step / line search
   std::vector<float> startDamage_;  // bond damage at the start of the line search
