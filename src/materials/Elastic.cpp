@@ -92,19 +92,33 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 // The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
 // small cases reproduce its gold results to the last bits.
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
+  // The block's critical stretch, when the evaluator fuses it here (breaksInPrecompute).
+  const bool breaks = s.breakableBondDamage != nullptr;
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
-    if (s.thermalStrain)
-      dilatationLoop<O::influence, O::damage, O::sides, true>(s, points);
-    else
-      dilatationLoop<O::influence, O::damage, O::sides, false>(s, points);
+    if (s.thermalStrain) {
+      if (O::damage && breaks)
+        dilatationLoop<O::influence, O::damage, O::sides, true, true>(s, points);
+      else
+        dilatationLoop<O::influence, O::damage, O::sides, true, false>(s, points);
+    } else if (O::damage && breaks) {
+      dilatationLoop<O::influence, O::damage, O::sides, false, true>(s, points);
+    } else {
+      dilatationLoop<O::influence, O::damage, O::sides, false, false>(s, points);
+    }
   });
 }
 
-template <bool kInfluence, bool kDamage, bool kSides, bool kThermal>
+// kBreak: the fused critical stretch. A bond whose stretch (|Y| - |xi|) / |xi| exceeds it gets
+// bond damage 1 before it enters the dilatation, the stretch computed as the separate damage
+// pass computes it (damage/CriticalStretch.cpp; the material's thermal strain does not enter
+// it), so that the same bonds break, and the damage pass's walk over the bonds is saved.
+template <bool kInfluence, bool kDamage, bool kSides, bool kThermal, bool kBreak>
 void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
+  const double criticalStretch = s.fusedCriticalStretch;
+  float* breakable = s.breakableBondDamage;
   for (int i : points) {
     double theta = 0;
     const double m = weightedVolume_[i];
@@ -117,7 +131,15 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       const double zeta = s.bondLength[b];
       const double omega = kInfluence ? s.influence[b] : 1.0;
-      const double intact = kDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      double intact = 1.0;
+      if constexpr (kBreak) {
+        const bool broken = (dY - zeta) / zeta > criticalStretch;
+        const float d = broken ? 1.0f : breakable[b];
+        if (broken) breakable[b] = 1.0f;  // a masked store: intact bonds' lines stay clean
+        intact = 1.0 - d;
+      } else if constexpr (kDamage) {
+        intact = 1.0 - s.bondDamage[b];
+      }
       const double own = kSides ? (s.bondSides[b] & 1) : 1.0;  // adds +0 where not own
       double e = dY - zeta;
       if (kThermal) e -= strainI * zeta;

@@ -173,6 +173,10 @@ class MaterialModel {
   // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
   // the bonds instead of two; the same bits as the separate damage loop).
   virtual bool fusesCriticalStretch() const { return false; }
+  // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
+  // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
+  // evaluator hands the model the breakable damage for that call only.
+  virtual bool breaksInPrecompute() const { return false; }
   // Whether the model reads ModelState::bondLength. The evaluator stores |xi| per bond (8 bytes
   // a bond) only if some block's material (or a damage pass that is not fused) asks for it; a
   // model that returns false computes |xi| with referenceBondLength().
