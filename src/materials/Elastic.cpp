@@ -153,6 +153,10 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
   const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
   const bool thermal = s.thermalStrain != nullptr;
+  // theta beta of every point a bond can reach (own and ghost), once per point instead of once
+  // per bond entry: one gathered load a bond less, the same product.
+  thetaBeta_.resize(static_cast<std::size_t>(s.topology->numOverlap));
+  for (int p = 0; p < s.topology->numOverlap; ++p) thetaBeta_[p] = dilatation_[p] * beta_[p];
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
     if (smooth)  // thermal strains with a smooth law are refused at set-up
@@ -206,9 +210,8 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
   const BondLaw law = s.bondLaw;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  const double* theta = dilatation_;
+  const double* thetaBeta = thetaBeta_.data();
   const double* alpha = alpha_;
-  const double* beta = beta_;
   const double* y = s.y;
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
@@ -217,7 +220,7 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    const double thetaBetaI = theta[i] * beta[i], alphaI = alpha[i];
+    const double thetaBetaI = thetaBeta[i], alphaI = alpha[i];
     const double* strain = s.thermalStrain;
     const double strainI = kThermal ? strain[i] : 0.0;
 #pragma omp simd reduction(+ : f0, f1, f2)
@@ -237,17 +240,17 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
       if constexpr (kSmooth) {
         const double F = law.forceScalar(e / zeta[b]);
         ti = intact * omega * zeta[b] * (thetaBetaI + alphaI * F);
-        tj = intact * omega * zeta[b] * (theta[j] * beta[j] + alpha[j] * F);
+        tj = intact * omega * zeta[b] * (thetaBeta[j] + alpha[j] * F);
       } else if constexpr (kThermal) {
         // Each end's extension less its own thermal part (Peridigm: e -= alpha Delta T zeta).
         double ei = e, ej = e;
         ei -= strainI * zeta[b];
         ej -= strain[j] * zeta[b];
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * ei);
-        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * ej);
+        tj = intact * (omega * thetaBeta[j] * zeta[b] + intact * omega * alpha[j] * ej);
       } else {
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
-        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+        tj = intact * (omega * thetaBeta[j] * zeta[b] + intact * omega * alpha[j] * e);
       }
       if constexpr (kSides) {  // an end whose horizon does not hold the bond exerts no force
         ti *= s.bondSides[b] & 1;

@@ -76,6 +76,7 @@ class Elastic : public MaterialModel {
   double* bulk_ = nullptr;  // per point (the dilatation modulus), each end's constants
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
+  std::vector<double> thetaBeta_;  // theta beta per overlap point, filled by computeForce
   bool partialStress_ = false;
   double* partialStressField_ = nullptr;
 };
