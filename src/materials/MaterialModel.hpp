@@ -170,8 +170,9 @@ class MaterialModel {
   virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }
   // Whether the model applies a Smooth BondLaw (DTT); damage models that need one check this.
   virtual bool acceptsSmoothBondLaw() const { return false; }
-  // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
-  // the bonds instead of two; the same bits as the separate damage loop).
+  // Whether the model can apply a critical-stretch check in its own bond loop (one pass over
+  // the bonds less; the same bits as the separate damage loop): in computeForce, or in
+  // precompute when breaksInPrecompute.
   virtual bool fusesCriticalStretch() const { return false; }
   // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
   // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
