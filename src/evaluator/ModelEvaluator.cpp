@@ -246,11 +246,24 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
       if (b.damage && !fusesCriticalStretch(b))
         b.damage->computeDamage(state_, b.points, bondDamage_);
   }
-  if (!syncAfterPrecompute_.empty()) {
+  // A fused critical stretch is handed to the block's first bond loop: precompute for a model
+  // that breaks there (its dilatation must see this step's breaks), else computeForce. Each
+  // point's loops read only its own bonds' damage, so the same bonds break as in the pass above.
+  const auto breakable = [&](const Block& b, bool inPrecompute) {
+    const bool fused =
+        updateDamage && fusesCriticalStretch(b) && b.material->breaksInPrecompute() == inPrecompute;
+    state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
+    state_.breakableBondBroken = fused ? bondBroken_ : nullptr;
+    state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
+  };
+  bool precompute = !syncAfterPrecompute_.empty();
+  for (const auto& b : blocks_) precompute = precompute || b.material->breaksInPrecompute();
+  if (precompute) {
     {
       Timers::Scope t(timers_, "Force");
       for (auto& b : blocks_) {
         state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
+        breakable(b, true);
         b.material->precompute(state_, b.points);
       }
     }
@@ -260,10 +273,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
   Timers::Scope t(timers_, "Force");
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
-    const bool fused = updateDamage && fusesCriticalStretch(b);
-    state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
-    state_.breakableBondBroken = fused ? bondBroken_ : nullptr;
-    state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
+    breakable(b, false);
     b.material->computeForce(state_, b.points);
   }
   state_.breakableBondDamage = nullptr;
@@ -272,8 +282,8 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
 }
 
 bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {
-  // Only when nothing between the damage and force phases reads this block's bond damage: the
-  // bond-based models have no precompute, and each point's bonds are its own entries.
+  // Only when nothing between the damage pass and the loop that breaks reads this block's bond
+  // damage: each point's loops read only its own bond entries (see evaluate).
   // Compact damage has no float array for a separate pass: always fused.
   return (fuseCriticalStretch_ || compactDamage_ || b.material->requiresFusedCriticalStretch()) &&
          b.damage && b.damage->fusableCriticalStretch() > 0 && b.material->fusesCriticalStretch();

@@ -92,19 +92,33 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 // The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
 // small cases reproduce its gold results to the last bits.
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
+  // The block's critical stretch, when the evaluator fuses it here (breaksInPrecompute).
+  const bool breaks = s.breakableBondDamage != nullptr;
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
-    if (s.thermalStrain)
-      dilatationLoop<O::influence, O::damage, O::sides, true>(s, points);
-    else
-      dilatationLoop<O::influence, O::damage, O::sides, false>(s, points);
+    if (s.thermalStrain) {
+      if (O::damage && breaks)
+        dilatationLoop<O::influence, O::damage, O::sides, true, true>(s, points);
+      else
+        dilatationLoop<O::influence, O::damage, O::sides, true, false>(s, points);
+    } else if (O::damage && breaks) {
+      dilatationLoop<O::influence, O::damage, O::sides, false, true>(s, points);
+    } else {
+      dilatationLoop<O::influence, O::damage, O::sides, false, false>(s, points);
+    }
   });
 }
 
-template <bool kInfluence, bool kDamage, bool kSides, bool kThermal>
+// kBreak: the fused critical stretch. A bond whose stretch (|Y| - |xi|) / |xi| exceeds it gets
+// bond damage 1 before it enters the dilatation, the stretch computed as the separate damage
+// pass computes it (damage/CriticalStretch.cpp; the material's thermal strain does not enter
+// it), so that the same bonds break, and the damage pass's walk over the bonds is saved.
+template <bool kInfluence, bool kDamage, bool kSides, bool kThermal, bool kBreak>
 void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
+  const double criticalStretch = s.fusedCriticalStretch;
+  float* breakable = s.breakableBondDamage;
   for (int i : points) {
     double theta = 0;
     const double m = weightedVolume_[i];
@@ -117,7 +131,15 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
       const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
       const double zeta = s.bondLength[b];
       const double omega = kInfluence ? s.influence[b] : 1.0;
-      const double intact = kDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      double intact = 1.0;
+      if constexpr (kBreak) {
+        const bool broken = (dY - zeta) / zeta > criticalStretch;
+        const float d = broken ? 1.0f : breakable[b];
+        if (broken) breakable[b] = 1.0f;  // a masked store: intact bonds' lines stay clean
+        intact = 1.0 - d;
+      } else if constexpr (kDamage) {
+        intact = 1.0 - s.bondDamage[b];
+      }
       const double own = kSides ? (s.bondSides[b] & 1) : 1.0;  // adds +0 where not own
       double e = dY - zeta;
       if (kThermal) e -= strainI * zeta;
@@ -131,6 +153,10 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
 void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) {
   const bool smooth = s.bondLaw.kind == BondLaw::Kind::Smooth;
   const bool thermal = s.thermalStrain != nullptr;
+  // theta beta of every point a bond can reach (own and ghost), once per point instead of once
+  // per bond entry: one gathered load a bond less, the same product.
+  thetaBeta_.resize(static_cast<std::size_t>(s.topology->numOverlap));
+  for (int p = 0; p < s.topology->numOverlap; ++p) thetaBeta_[p] = dilatation_[p] * beta_[p];
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
     if (smooth)  // thermal strains with a smooth law are refused at set-up
@@ -184,9 +210,8 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
   const BondLaw law = s.bondLaw;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  const double* theta = dilatation_;
+  const double* thetaBeta = thetaBeta_.data();
   const double* alpha = alpha_;
-  const double* beta = beta_;
   const double* y = s.y;
   const double* volume = s.volume;
   const double* zeta = s.bondLength;
@@ -195,7 +220,7 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
   for (int i : points) {
     double f0 = 0, f1 = 0, f2 = 0;
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    const double thetaBetaI = theta[i] * beta[i], alphaI = alpha[i];
+    const double thetaBetaI = thetaBeta[i], alphaI = alpha[i];
     const double* strain = s.thermalStrain;
     const double strainI = kThermal ? strain[i] : 0.0;
 #pragma omp simd reduction(+ : f0, f1, f2)
@@ -215,17 +240,17 @@ void Elastic::forceLoop(const ModelState& s, const std::vector<int>& points) con
       if constexpr (kSmooth) {
         const double F = law.forceScalar(e / zeta[b]);
         ti = intact * omega * zeta[b] * (thetaBetaI + alphaI * F);
-        tj = intact * omega * zeta[b] * (theta[j] * beta[j] + alpha[j] * F);
+        tj = intact * omega * zeta[b] * (thetaBeta[j] + alpha[j] * F);
       } else if constexpr (kThermal) {
         // Each end's extension less its own thermal part (Peridigm: e -= alpha Delta T zeta).
         double ei = e, ej = e;
         ei -= strainI * zeta[b];
         ej -= strain[j] * zeta[b];
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * ei);
-        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * ej);
+        tj = intact * (omega * thetaBeta[j] * zeta[b] + intact * omega * alpha[j] * ej);
       } else {
         ti = intact * (omega * thetaBetaI * zeta[b] + intact * omega * alphaI * e);
-        tj = intact * (omega * (theta[j] * beta[j]) * zeta[b] + intact * omega * alpha[j] * e);
+        tj = intact * (omega * thetaBeta[j] * zeta[b] + intact * omega * alpha[j] * e);
       }
       if constexpr (kSides) {  // an end whose horizon does not hold the bond exerts no force
         ti *= s.bondSides[b] & 1;

@@ -19,6 +19,9 @@ class Elastic : public MaterialModel {
   double thermalExpansionCoefficient() const override { return thermalExpansion_; }
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsSmoothBondLaw() const override { return true; }
+  // The critical stretch breaks bonds in the dilatation loop: one pass over the bonds less.
+  bool fusesCriticalStretch() const override { return true; }
+  bool breaksInPrecompute() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override {
@@ -53,7 +56,7 @@ class Elastic : public MaterialModel {
   // smooth law) so that their bodies have no branch and vectorize.
   // kThermal: extensions less the thermal part, e = |Y| - |xi| - alpha Delta T |xi| (each end's
   // own thermal strain, state.thermalStrain), as Peridigm forms them.
-  template <bool kInfluence, bool kDamage, bool kSides, bool kThermal>
+  template <bool kInfluence, bool kDamage, bool kSides, bool kThermal, bool kBreak>
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
   template <bool kSmooth, bool kInfluence, bool kDamage, bool kSides, bool kThermal>
   void forceLoop(const ModelState& state, const std::vector<int>& points) const;
@@ -73,6 +76,7 @@ class Elastic : public MaterialModel {
   double* bulk_ = nullptr;  // per point (the dilatation modulus), each end's constants
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
+  std::vector<double> thetaBeta_;  // theta beta per overlap point, filled by computeForce
   bool partialStress_ = false;
   double* partialStressField_ = nullptr;
 };

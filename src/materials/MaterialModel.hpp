@@ -170,9 +170,14 @@ class MaterialModel {
   virtual bool acceptsInfluenceFunction(const std::string& name) const { return name == "One"; }
   // Whether the model applies a Smooth BondLaw (DTT); damage models that need one check this.
   virtual bool acceptsSmoothBondLaw() const { return false; }
-  // Whether computeForce can apply a critical-stretch check in its own bond loop (one pass over
-  // the bonds instead of two; the same bits as the separate damage loop).
+  // Whether the model can apply a critical-stretch check in its own bond loop (one pass over
+  // the bonds less; the same bits as the separate damage loop): in computeForce, or in
+  // precompute when breaksInPrecompute.
   virtual bool fusesCriticalStretch() const { return false; }
+  // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
+  // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
+  // evaluator hands the model the breakable damage for that call only.
+  virtual bool breaksInPrecompute() const { return false; }
   // Whether the model reads ModelState::bondLength. The evaluator stores |xi| per bond (8 bytes
   // a bond) only if some block's material (or a damage pass that is not fused) asks for it; a
   // model that returns false computes |xi| with referenceBondLength().
