@@ -28,6 +28,7 @@ class Elastic : public MaterialModel {
   void precompute(const ModelState& state, const std::vector<int>& points) override;
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   TangentReach tangentReach() const override { return TangentReach::Family; }
+  bool hasAnalyticTangent() const override { return true; }
   void addStiffness(const ModelState& state, const std::vector<int>& points,
                     TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,

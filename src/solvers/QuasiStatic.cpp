@@ -33,7 +33,7 @@ double globalNorm(const std::vector<double>& values, MPI_Comm comm) {
 
 QuasiStatic::QuasiStatic(const QuasiStaticConfig& config, SolverContext context)
     : config_(config), c_(std::move(context)) {
-  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path);
+  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
   const int n3 = 3 * c_.topology->numOwned;
   held_ = c_.fields->node(kHeldField, 3);
   baseHeld_.assign(n3, 0.0);
@@ -43,6 +43,11 @@ QuasiStatic::QuasiStatic(const QuasiStaticConfig& config, SolverContext context)
   residual_.assign(n3, 0.0);
   increment_.assign(n3, 0.0);
   start_.assign(n3, 0.0);
+  stepStart_.assign(n3, 0.0);
+  if (tangent_->finiteDifference() && c_.rank == 0) {
+    *c_.log << "QuasiStatic: finite-difference tangent, " << tangent_->colours()
+            << " colours, probe length " << tangent_->probeLength() << "\n";
+  }
 }
 
 void QuasiStatic::updateHeld() {
@@ -68,10 +73,13 @@ void QuasiStatic::updateHeld() {
   rankDeficient_ = total;
 }
 
-double QuasiStatic::evaluateResidual(double time) {
+double QuasiStatic::evaluateResidual(double time, bool commit) {
   const auto& t = *c_.topology;
   for (int k = 0; k < 3 * t.numOwned; ++k) c_.y[k] = c_.x[k] + c_.u[k];
-  c_.evaluator->evaluate(0.0);
+  // Rate models integrate over the load step: dt and the velocity of its displacement increment.
+  if (stepDt_ > 0 && c_.evaluator->readsVelocity())
+    for (int k = 0; k < 3 * t.numOwned; ++k) c_.v[k] = (c_.u[k] - stepStart_[k]) / stepDt_;
+  c_.evaluator->evaluate(stepDt_, true, commit);
   (void)time;
   updateHeld();
   for (int i = 0; i < t.numOwned; ++i)
@@ -145,10 +153,11 @@ void QuasiStatic::run() {
   const int n3 = 3 * t.numOwned;
   std::ostream& log = *c_.log;
   const auto& times = config_.times;
-  std::vector<double> predictor(n3, 0.0), stepStart(n3, 0.0);
+  std::vector<double> predictor(n3, 0.0);
+  std::vector<double>& stepStart = stepStart_;
   double time = times[0];
   if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
-  evaluateResidual(time);
+  evaluateResidual(time, true);
   for (int k = 0; k < n3; ++k) c_.a[k] = 0.0;
   if (c_.stepOffset == 0) {
     c_.outputs->write(0, time);
@@ -168,6 +177,8 @@ void QuasiStatic::run() {
     const double previous = time;
     time = times[step];
     const double dt = time - previous;
+    stepDt_ = dt;
+    tangent_->setProbeTimeStep(dt);
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
     c_.conditions->applyPrescribedDisplacement(time, c_.u);
     if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
@@ -265,6 +276,8 @@ void QuasiStatic::run() {
         throw RunError(msg.str());
       }
     }
+    // The converged state is the step's end: history models advance to it (the same force).
+    if (c_.evaluator->hasHistory()) evaluateResidual(time, true);
     for (int k = 0; k < n3; ++k) {
       predictor[k] = (c_.u[k] - stepStart[k]) / dt;
       c_.v[k] = predictor[k];

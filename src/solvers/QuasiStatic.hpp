@@ -35,11 +35,17 @@ class QuasiStatic {
   // For tests: evaluates the forces at y = x + u (collective) and returns ||R||; assembles the
   // tangent at the state of the last evaluation. residual(): R = V (f + b), owned.
   double evaluate(double time) { return evaluateResidual(time); }
+  // For tests: the step size of the trial evaluations and of the tangent's probes.
+  void setStepDt(double dt) {
+    stepDt_ = dt;
+    tangent_->setProbeTimeStep(dt);
+  }
   void assembleTangent() { tangent_->assemble(c_.evaluator->state(), *c_.blocks, held_, 1.0); }
   const std::vector<double>& residual() const { return residual_; }
 
  private:
-  double evaluateResidual(double time);  // evaluate forces at y = x + u; returns ||R||
+  // Evaluates the forces at y = x + u (a trial of the load step unless `commit`); returns ||R||.
+  double evaluateResidual(double time, bool commit = false);
   void updateHeld();
   double heldDiagonal() const;
   int solveLinear(bool precondition);  // -1: not converged
@@ -53,6 +59,8 @@ class QuasiStatic {
   std::vector<double> residual_;    // owned, 3 per point: R = V (f + b), 0 where held
   std::vector<double> increment_;   // owned: the Newton direction
   std::vector<double> start_;       // owned: u at the start of the step / line search
+  std::vector<double> stepStart_;   // owned: u at the start of the load step
+  double stepDt_ = 0.0;             // the load step's duration (0 before the first)
   std::vector<float> startDamage_;  // bond damage at the start of the line search
   long long rankDeficient_ = 0;     // points held because no intact bond is left
   Statistics stats_;
