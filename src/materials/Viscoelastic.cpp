@@ -193,6 +193,7 @@ PERIDOT_REGISTER_MATERIAL(
          "(Maxwell) branch; the long-time shear modulus is (1 - lambda_i) G"},
         {"tau b", "positive number, required: relaxation time of the branch"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

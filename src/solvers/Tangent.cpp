@@ -107,6 +107,9 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
         Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology.ownedMap3,
         topology.ownedMap3);
     fd_ = std::make_unique<FiniteDifferenceTangent>(topology, owned_, probe);
+    overlap_ = Teuchos::null;  // only the owned rows are probed
+    export_ = Teuchos::null;
+    blocks_.columns = std::vector<int>();
   }
 }
 
@@ -160,7 +163,8 @@ void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks
 
 double Tangent::bytes() const {
   const double pointEntries = static_cast<double>(blocks_.columns.size());
-  double matrixEntries = static_cast<double>(overlap_->getNodeNumEntries());
+  double matrixEntries =
+      overlap_.is_null() ? 0.0 : static_cast<double>(overlap_->getNodeNumEntries());
   if (!owned_.is_null()) matrixEntries += static_cast<double>(owned_->getNodeNumEntries());
   return pointEntries * (9 * sizeof(double) + sizeof(int)) +
          matrixEntries * (sizeof(double) + sizeof(LocalOrdinal)) + (fd_ ? fd_->bytes() : 0.0);
