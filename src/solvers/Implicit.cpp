@@ -22,6 +22,10 @@ Implicit::Implicit(const ImplicitConfig& config, double initialTime, long long n
   tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
   // Newmark: v = v~ + gamma dt a with a = (u - u~) / (beta dt^2), so dv/du = gamma / (beta dt).
   tangent_->setProbeTimeStep(config_.dt, config_.gamma / (config_.beta * config_.dt));
+  if (tangent_->finiteDifference() && c_.rank == 0) {
+    *c_.log << "Implicit: finite-difference tangent, " << tangent_->colours()
+            << " colours, probe length " << tangent_->probeLength() << "\n";
+  }
   const int numOwned = c_.topology->numOwned;
   const int n3 = 3 * numOwned;
   held_ = c_.fields->node(kHeldField, 3);
