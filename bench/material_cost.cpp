@@ -4,7 +4,8 @@
 // that the plastic models yield at every step (sigma_Y = 1e-6 G) and take their plastic branch.
 // The points move with the velocity of that stretch per unit time (dt = 1), so that the
 // correspondence models' rate form (their default) accumulates stress and yields too; each
-// correspondence model is also measured with "Stress Integration: Total Lagrangian Green Strain".
+// correspondence model but the viscoplastic one (rate form only) is also measured with "Stress
+// Integration: Total Lagrangian Green Strain".
 // Usage: bench_material_cost [--benchmark_min_time=1] [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
 #include <mpi.h>
@@ -60,11 +61,22 @@ struct Scene {
     m.set("Density", 1.0);
     m.set("Bulk Modulus", 5.0 / 3.0);
     m.set("Shear Modulus", 1.0);
-    if (model.find("Plastic") != std::string::npos || model.find("Hardening") != std::string::npos)
+    if (model.find("Plastic") != std::string::npos ||
+        model.find("Hardening") != std::string::npos ||
+        model.find("Viscoplastic") != std::string::npos)
       m.set("Yield Stress", 1e-6);
     if (model == "Elastic Plastic Hardening") m.set("Hardening Modulus", 1e-16);
     if (model.find("Correspondence") != std::string::npos) m.set("Hourglass Coefficient", 0.02);
     if (model == "Isotropic Hardening Correspondence") m.set("Hardening Modulus", 0.01);
+    if (model == "Viscoplastic Needleman Correspondence") {
+      // Flowing at every point and step: sigma_Y 1e-6 G, the scene's strain rate 1e-4 against
+      // a reference rate of 1e-5, softening and hardening both active.
+      m.set("Strain Hardening Exponent", 0.1);
+      m.set("Rate Hardening Exponent", 0.05);
+      m.set("Reference Strain Rate", 1e-5);
+      m.set("Reference Strain 0", 1e-6);
+      m.set("Reference Strain 1", 1e-3);
+    }
     if (!integration.empty()) m.set("Stress Integration", integration);
     if (model == "Viscoelastic") {
       m.set("lambda_i", 0.5);
@@ -116,6 +128,9 @@ BENCHMARK_CAPTURE(Evaluate, ElasticPlasticCorrespondence,
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Evaluate, IsotropicHardeningCorrespondence,
                   std::string("Isotropic Hardening Correspondence"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ViscoplasticNeedlemanCorrespondence,
+                  std::string("Viscoplastic Needleman Correspondence"))
     ->Unit(benchmark::kMillisecond);
 const std::string kGreen = "Total Lagrangian Green Strain";
 BENCHMARK_CAPTURE(Evaluate, ElasticCorrespondenceGreen, std::string("Elastic Correspondence"),

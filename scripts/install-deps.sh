@@ -6,7 +6,7 @@ pkgs=(
   build-essential cmake pkg-config
   libtrilinos-teuchos-dev libtrilinos-tpetra-dev libtrilinos-epetra-dev
   libtrilinos-kokkos-dev libtrilinos-kokkos-kernels-dev libtrilinos-zoltan-dev
-  libtrilinos-pamgen-dev libtrilinos-belos-dev libtrilinos-ifpack2-dev libptscotch-dev libscotch-dev
+  libtrilinos-pamgen-dev libtrilinos-belos-dev libtrilinos-ifpack2-dev libtrilinos-nox-dev libptscotch-dev libscotch-dev
   libexodusii-dev libnetcdf-dev libopenmpi-dev openmpi-bin libboost-dev
   googletest libgtest-dev libbenchmark-dev netcdf-bin
   gmsh python3-netcdf4 python3-numpy python3-matplotlib

@@ -4,7 +4,8 @@ edge-cracked patch, examples/v4_edge_crack) by model and horizon ratio, against 
 
 One material for all models, E = 1e4 Pa, nu = 1/4, plane strain, G_I = 1 J/m^2 (each model's
 critical stretch from the fracture energy): LEFM gives 134.9 Pa (paper 000 eqs. 23-24). For each
-model (normalized PMB, PMB, LPS) and delta/dx (3.015, 4.015, 5.015) the patch is run at dx = a/3 ... a/8
+model (normalized PMB, PMB, LPS; PMB and LPS also with the Conical influence function, whose
+critical stretch comes from the same fracture energy through J_k) and delta/dx (3.015, 4.015, 5.015) the patch is run at dx = a/3 ... a/8
 and the critical traction (the crack has grown by 0.1 m, critical.py's measure) is fitted
 linearly in dx and extrapolated to dx -> 0. Cost: the CPU time of the finest run.
 
@@ -29,14 +30,17 @@ import critical  # noqa: E402  (examples/v4_edge_crack/critical.py)
 
 A = 0.125
 SPACINGS = [A / 3, A / 4, A / 5, A / 6, A / 8]
-MATERIALS = {"normalized PMB": "normalized-pmb", "PMB": "pmb", "LPS": "lps"}
+# label -> (make_patch.py --material, --influence)
+MATERIALS = {"normalized PMB": ("normalized-pmb", "One"), "PMB": ("pmb", "One"),
+             "LPS": ("lps", "One"), "PMB, Conical": ("pmb", "Conical"),
+             "LPS, Conical": ("lps", "Conical")}
 RATIOS = [3.015, 4.015, 5.015]
 RATE = 400.0
 
 
-def run(args, material, ratio, dx):
+def run(args, material, influence, ratio, dx):
     made = subprocess.run(["/usr/bin/python3", os.path.join(V4, "make_patch.py"), "%.7f" % dx,
-                           "--model", "consistent", "--material", material,
+                           "--model", "consistent", "--material", material, "--influence", influence,
                            "--horizon-ratio", repr(ratio), "--rate", repr(RATE)],
                           cwd=args.workdir, capture_output=True, text=True, check=True)
     deck = made.stdout.split(":")[0]
@@ -47,9 +51,9 @@ def run(args, material, ratio, dx):
         sys.exit("run %s failed:\n%s%s" % (deck, out.stdout, out.stderr))
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     _, grown, init, runaway = critical.read(os.path.join(args.workdir, deck[:-5] + ".h"), RATE)
-    print("  %-15s d/dx %.3f dx %.5f  critical %.2f Pa  cpu %.1f s" %
-          (material, ratio, dx, grown, cpu), flush=True)
-    return dict(material=material, ratio=ratio, dx=dx, critical=grown, first_tip_bond=init,
+    print("  %-15s %-8s d/dx %.3f dx %.5f  critical %.2f Pa  cpu %.1f s" %
+          (material, influence, ratio, dx, grown, cpu), flush=True)
+    return dict(material=material, influence=influence, ratio=ratio, dx=dx, critical=grown, first_tip_bond=init,
                 runaway=runaway, cpu=cpu)
 
 
@@ -64,9 +68,9 @@ def main():
     os.makedirs(a.workdir, exist_ok=True)
     lefm = critical.lefm(1e4 / (1 - 0.25 ** 2))
     rows, fits = [], []
-    for label, material in MATERIALS.items():
+    for label, (material, influence) in MATERIALS.items():
         for ratio in RATIOS:
-            series = [run(a, material, ratio, dx) for dx in SPACINGS]
+            series = [run(a, material, influence, ratio, dx) for dx in SPACINGS]
             for r in series:
                 r["label"] = label
             rows += series
@@ -87,7 +91,7 @@ def main():
             f["label"], f["ratio"], first[0], f["finest"], f["sigma0"], f["error"],
             100 * (f["sigma0"] / lefm - 1), f["cpu_finest"]))
     with open(a.csv, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=["label", "material", "ratio", "dx", "critical",
+        w = csv.DictWriter(fh, fieldnames=["label", "material", "influence", "ratio", "dx", "critical",
                                            "first_tip_bond", "runaway", "cpu"])
         w.writeheader()
         w.writerows(rows)

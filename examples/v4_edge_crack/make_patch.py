@@ -31,7 +31,12 @@ ap.add_argument("--horizon-ratio", type=float, default=3.015)
 ap.add_argument("--material", choices=["normalized-pmb", "pmb", "lps"], default="normalized-pmb",
                 help="with --model consistent: the model of the speed/accuracy map "
                      "(bench/tradeoff/fracture_map.py); the same material, E = 1e4, nu = 1/4")
+ap.add_argument("--influence", choices=["One", "Conical", "Conical Over Zeta"], default="One",
+                help="the influence function (Discretization -> Influence Function); the "
+                     "critical stretch follows it (fracture-energy formula with J_k)")
 a = ap.parse_args()
+if a.influence != "One" and a.material == "normalized-pmb":
+    ap.error("--influence: Normalized PMB is defined for the influence function One only")
 if a.material != "normalized-pmb" and a.model != "consistent":
     ap.error("--material needs --model consistent (the paper's constant is normalized PMB's)")
 
@@ -42,6 +47,8 @@ delta = a.horizon_ratio * dx
 tag = f"dx{a.dx:g}".replace(".", "p") + ("" if a.horizon_ratio == 3.015 else f"_m{a.horizon_ratio:g}".replace(".", "p"))
 if a.material != "normalized-pmb":
     tag += "_" + a.material
+if a.influence != "One":
+    tag += "_" + a.influence.lower().replace(" ", "")
 prefix = f"v4_{tag}_"
 with open(prefix + "points.txt", "w") as f:
     f.write("# x y z block area\n")
@@ -83,6 +90,7 @@ Peridigm:
     Input Mesh File: {prefix}points.txt
     Dimension: 2
     Thickness: 1.0
+    Influence Function: "{a.influence}"
     Bond Filters:
       Edge Crack:
         Type: Rectangular_Plane

@@ -21,6 +21,7 @@
 #include "neighbor/NeighborSearch.hpp"
 #include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
+#include "solvers/NOXQuasiStatic.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
@@ -277,7 +278,8 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   const bool compact = config_.discretization.compactBonds;
   evaluator_->setStoreBondLengths(!compact);
   evaluator_->setCompactDamageAllowed(compact && !config_.restart.enabled &&
-                                      !config_.solver.quasiStatic);
+                                      !config_.solver.quasiStatic &&
+                                      !config_.solver.noxQuasiStatic);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();
@@ -515,6 +517,7 @@ void Simulation::run() {
     config_.solver = config_.chainedSolvers[k];
     time_ = config_.solver.initialTime;
     quasiStatic_.reset();
+    noxQuasiStatic_.reset();
     implicit_.reset();
     relaxation_.reset();
     prepareSolver();

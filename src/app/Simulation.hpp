@@ -26,6 +26,7 @@
 namespace peridot {
 
 class QuasiStatic;
+class NOXQuasiStatic;
 class DynamicRelaxation;
 class Implicit;
 
@@ -72,6 +73,7 @@ class Simulation {
   // For tests: the model evaluator and the blocks.
   ModelEvaluator& evaluator() { return *evaluator_; }
   std::vector<Block>& blocks() { return blocks_; }
+  NOXQuasiStatic* noxQuasiStatic() { return noxQuasiStatic_.get(); }
   // The Adaptive Dynamic Relaxation solver of the last run() (null for the others).
   DynamicRelaxation* dynamicRelaxation() { return relaxation_.get(); }
   // The Implicit (Newmark) solver of the last run() (null for the others).
@@ -135,6 +137,7 @@ class Simulation {
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
   std::unique_ptr<QuasiStatic> quasiStatic_;
+  std::unique_ptr<NOXQuasiStatic> noxQuasiStatic_;
   std::unique_ptr<DynamicRelaxation> relaxation_;
   std::unique_ptr<Implicit> implicit_;
   double origin_ = 0;        // time of step 0: time at step n is origin_ + n * dt_

@@ -4,29 +4,33 @@
 #include "core/Error.hpp"
 #include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
+#include "solvers/NOXQuasiStatic.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
 
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
-    throw InputError(config_.restart.path,
-                     "Restart with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
-                     "solvers is not supported yet");
+    throw InputError(
+        config_.restart.path,
+        "Restart with the QuasiStatic, NOXQuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+        "solvers is not supported yet");
   }
   if (contact_) {
-    throw InputError(config_.contact.path,
-                     "contact with the QuasiStatic, Implicit and Adaptive Dynamic Relaxation "
-                     "solvers is not supported (nor by Peridigm)");
+    throw InputError(
+        config_.contact.path,
+        "contact with the QuasiStatic, NOXQuasiStatic, Implicit and Adaptive Dynamic Relaxation "
+        "solvers is not supported (nor by Peridigm)");
   }
   if (config_.solver.loadStepped()) {
     for (const auto& b : blocks_)
       if (b.damage && b.damage->integratesInTime()) {
-        throw InputError(config_.solver.path,
-                         "the damage model \"" + b.damageName + "\" of block " + b.name +
-                             " integrates over time (LSJ-T), which a load-stepped solver "
-                             "(QuasiStatic, Adaptive Dynamic Relaxation) does not have: its "
-                             "damage would never grow; use Verlet or Implicit");
+        throw InputError(
+            config_.solver.path,
+            "the damage model \"" + b.damageName + "\" of block " + b.name +
+                " integrates over time (LSJ-T), which a load-stepped solver "
+                "(QuasiStatic, NOXQuasiStatic, Adaptive Dynamic Relaxation) does not have: its "
+                "damage would never grow; use Verlet or Implicit");
       }
   }
   // The solver and its tangent are built here, so that a material without a tangent stops the
@@ -64,6 +68,9 @@ void Simulation::checkImplicit() {
   } else if (config_.solver.dynamicRelaxation) {
     relaxation_ =
         std::make_unique<DynamicRelaxation>(config_.solver.dynamicRelaxationConfig, context);
+  } else if (config_.solver.noxQuasiStatic) {
+    noxQuasiStatic_ =
+        std::make_unique<NOXQuasiStatic>(config_.solver.noxQuasiStaticConfig, context);
   } else {
     quasiStatic_ = std::make_unique<QuasiStatic>(config_.solver.quasiStaticConfig, context);
   }
@@ -89,12 +96,16 @@ void Simulation::runImplicit() {
   if (relaxation_) {
     relaxation_->setRunHooks(outputs_.get(), observer_);
     relaxation_->run();
+  } else if (noxQuasiStatic_) {
+    noxQuasiStatic_->setRunHooks(outputs_.get(), observer_);
+    noxQuasiStatic_->run();
   } else {
     quasiStatic_->setRunHooks(outputs_.get(), observer_);
     quasiStatic_->run();
   }
-  const auto& times = relaxation_ ? config_.solver.dynamicRelaxationConfig.times
-                                  : config_.solver.quasiStaticConfig.times;
+  const auto& times = relaxation_       ? config_.solver.dynamicRelaxationConfig.times
+                      : noxQuasiStatic_ ? config_.solver.noxQuasiStaticConfig.times
+                                        : config_.solver.quasiStaticConfig.times;
   lastStep_ = stepOffset_ + static_cast<long long>(times.size()) - 1;
   time_ = times.back();
 }

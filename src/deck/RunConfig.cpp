@@ -113,12 +113,10 @@ SolverConfig readSolver(ListReader s) {
   if (!(sc.finalTime > sc.initialTime)) {
     throw InputError(s.pathOf("Final Time"), "must be larger than the Initial Time");
   }
-  for (const char* other : {"NOXQuasiStatic", "ImplicitDiffusion"}) {
-    if (s.isSublist(other)) {
-      throw InputError(s.pathOf(other),
-                       "this solver is not supported by Peridot yet; use Verlet, QuasiStatic, "
-                       "Implicit or Adaptive Dynamic Relaxation");
-    }
+  if (s.isSublist("ImplicitDiffusion")) {
+    throw InputError(s.pathOf("ImplicitDiffusion"),
+                     "this solver is not supported by Peridot yet; use Verlet, QuasiStatic, "
+                     "NOXQuasiStatic, Implicit or Adaptive Dynamic Relaxation");
   }
   const std::string preconditioner =
       s.choice("Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
@@ -135,6 +133,22 @@ SolverConfig readSolver(ListReader s) {
                                            preconditioner, verbose);
     sc.initialTime = sc.quasiStaticConfig.times.front();
     sc.finalTime = sc.quasiStaticConfig.times.back();
+    s.finish();
+    return sc;
+  }
+  if (s.isSublist("NOXQuasiStatic")) {
+    for (const char* other : {"Verlet", "QuasiStatic", "Implicit", "Adaptive Dynamic Relaxation"}) {
+      if (s.has(other)) {
+        throw InputError(s.pathOf(other),
+                         "one solver list per Solver: NOXQuasiStatic or " + std::string(other));
+      }
+    }
+    ListReader nox = s.sublist("NOXQuasiStatic");
+    sc.noxQuasiStatic = true;
+    sc.noxQuasiStaticConfig = readNOXQuasiStatic(nox, sc.initialTime, sc.finalTime,
+                                                 s.has("Final Time"), preconditioner, verbose);
+    sc.initialTime = sc.noxQuasiStaticConfig.times.front();
+    sc.finalTime = sc.noxQuasiStaticConfig.times.back();
     s.finish();
     return sc;
   }
@@ -447,6 +461,14 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
   RunConfig config;
   ListReader top(deck, "");
   config.verbose = top.boolean("Verbose", false);
+  // Peridigm's RKPM (reproducing kernel particle method) decks: a meshfree discretization of
+  // local continuum mechanics, not peridynamics; refused before anything else reads the deck.
+  if (top.has("RKPM Kernels")) {
+    throw InputError("RKPM Kernels",
+                     "Peridigm's RKPM discretization (reproducing kernel particle method, a "
+                     "meshfree discretization of local continuum mechanics, not peridynamics) is "
+                     "not supported by Peridot");
+  }
   config.discretization = readDiscretizationConfig(top.sublist("Discretization"));
 
   ListReader materials = top.sublist("Materials");

@@ -14,6 +14,7 @@
 #include "materials/MaterialModel.hpp"
 #include "solvers/DynamicRelaxationConfig.hpp"
 #include "solvers/ImplicitConfig.hpp"
+#include "solvers/NOXQuasiStaticConfig.hpp"
 #include "solvers/QuasiStaticConfig.hpp"
 
 namespace peridot {
@@ -60,14 +61,18 @@ struct SolverConfig {
   bool verletLimitEstimate = false;
   bool quasiStatic = false;  // a QuasiStatic list instead of Verlet
   QuasiStaticConfig quasiStaticConfig;
+  bool noxQuasiStatic = false;  // a NOXQuasiStatic list (NOX's solvers) instead of Verlet
+  NOXQuasiStaticConfig noxQuasiStaticConfig;
   bool implicit = false;  // an Implicit (Newmark) list instead of Verlet
   ImplicitConfig implicitConfig;
   // An Adaptive Dynamic Relaxation list instead of Verlet (a Peridot extension).
   bool dynamicRelaxation = false;
   DynamicRelaxationConfig dynamicRelaxationConfig;
   // Solvers that step through load steps rather than time steps of a fixed size.
-  bool loadStepped() const { return quasiStatic || dynamicRelaxation; }
-  bool explicitVerlet() const { return !quasiStatic && !implicit && !dynamicRelaxation; }
+  bool loadStepped() const { return quasiStatic || noxQuasiStatic || dynamicRelaxation; }
+  bool explicitVerlet() const {
+    return !quasiStatic && !noxQuasiStatic && !implicit && !dynamicRelaxation;
+  }
   // Initialize Predictor From Previous Solver: a chained QuasiStatic solver's first load step
   // starts from the velocity the previous solver left (times the step's duration).
   bool predictorFromPrevious = false;

@@ -8,10 +8,7 @@
 
 namespace peridot {
 
-namespace {
-
-// The deviator of the stress S and its squared norm dev:dev (the trial state of both returns).
-double deviator(const double* S, double* dev) {
+double ElasticPlasticCorrespondence::deviator(const double* S, double* dev) {
   const double mean = (S[0] + S[4] + S[8]) / 3.0;
   double ss = 0;
   for (int k = 0; k < 9; ++k) {
@@ -21,16 +18,16 @@ double deviator(const double* S, double* dev) {
   return ss;
 }
 
-}  // namespace
-
 ElasticPlasticCorrespondence::ElasticPlasticCorrespondence(ListReader& p, const std::string& name,
-                                                           bool hardening)
+                                                           bool hardening, bool flaw)
     : CorrespondenceMaterial(p, name) {
   yieldStress_ = p.positiveNumber("Yield Stress");
   if (hardening) {
     hardeningModulus_ = p.nonNegativeNumber("Hardening Modulus", -1.0);
     if (hardeningModulus_ < 0)
       throw InputError(p.pathOf("Hardening Modulus"), "required (a number >= 0)");
+  }
+  if (flaw) {
     flaw_ = p.boolean("Enable Flaw", false);
     if (flaw_) {
       flawLocation_[0] = p.number("Flaw Location X");

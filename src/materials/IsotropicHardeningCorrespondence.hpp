@@ -10,7 +10,7 @@ namespace peridot {
 class IsotropicHardeningCorrespondence : public ElasticPlasticCorrespondence {
  public:
   explicit IsotropicHardeningCorrespondence(ListReader& params)
-      : ElasticPlasticCorrespondence(params, "Isotropic Hardening Correspondence", true) {}
+      : ElasticPlasticCorrespondence(params, "Isotropic Hardening Correspondence", true, true) {}
 };
 
 }  // namespace peridot

@@ -101,10 +101,45 @@ void dampDiagonal(CrsMatrix& A, double scale, double shift) {
   A.fillComplete(A.getDomainMap(), A.getRangeMap());
 }
 
+Teuchos::RCP<TpetraOperator> makePreconditioner(const Teuchos::RCP<CrsMatrix>& A,
+                                                const LinearSolverSettings& settings) {
+  const std::string& kind = settings.preconditioner;
+  if (kind == "Block 3x3") return Teuchos::rcp(new BlockJacobi(*A));
+  if (kind == "None") return Teuchos::null;
+  Teuchos::ParameterList params;
+  std::string type;
+  if (kind == "Full Tangent" || kind == "ILU") {
+    type = "RILUK";
+    params.set("fact: iluk level-of-fill", kind == "ILU" ? settings.levelOfFill : 0);
+  } else if (kind == "ILUT") {
+    type = "ILUT";
+    params.set("fact: ilut level-of-fill", 1.0 + settings.levelOfFill);
+  } else {
+    type = "RELAXATION";
+    params.set("relaxation: type", kind == "Jacobi" ? "Jacobi" : "Symmetric Gauss-Seidel");
+    params.set("relaxation: sweeps", settings.sweeps);
+  }
+  auto prec = Ifpack2::Factory::create<RowMatrix>(type, A);
+  prec->setParameters(params);
+  prec->initialize();
+  prec->compute();
+  return prec;
+}
+
 int solveTangentSystem(const Teuchos::RCP<CrsMatrix>& A, const std::vector<double>& rhs,
                        const double* held, const LinearSolverSettings& settings, bool precondition,
                        std::vector<double>& x, long long& iterations) {
-  const auto map = A->getRowMap();
+  Teuchos::RCP<TpetraOperator> preconditioner;
+  if (precondition) preconditioner = makePreconditioner(A, settings);
+  return solveLinearSystem(A, preconditioner, rhs, held, settings, x, iterations);
+}
+
+int solveLinearSystem(const Teuchos::RCP<const TpetraOperator>& A,
+                      const Teuchos::RCP<TpetraOperator>& preconditioner,
+                      const std::vector<double>& rhs, const double* held,
+                      const LinearSolverSettings& settings, std::vector<double>& x,
+                      long long& iterations) {
+  const auto map = A->getRangeMap();
   auto B = Teuchos::rcp(new MV(map, 1));
   auto X = Teuchos::rcp(new MV(map, 1));
   {
@@ -112,26 +147,19 @@ int solveTangentSystem(const Teuchos::RCP<CrsMatrix>& A, const std::vector<doubl
     for (std::size_t k = 0; k < rhs.size(); ++k) b[k] = rhs[k];
   }
   auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
-  Teuchos::RCP<OP> preconditioner;
-  if (precondition && settings.preconditioner == "Full Tangent") {
-    auto ilu = Ifpack2::Factory::create<RowMatrix>("RILUK", A);
-    Teuchos::ParameterList params;
-    params.set("fact: iluk level-of-fill", 0);
-    ilu->setParameters(params);
-    ilu->initialize();
-    ilu->compute();
-    preconditioner = ilu;
-  } else if (precondition && settings.preconditioner == "Block 3x3") {
-    preconditioner = Teuchos::rcp(new BlockJacobi(*A));
+  if (!preconditioner.is_null()) {
+    if (settings.rightPreconditioning)
+      problem->setRightPrec(preconditioner);
+    else
+      problem->setLeftPrec(preconditioner);
   }
-  if (!preconditioner.is_null()) problem->setLeftPrec(preconditioner);
   if (settings.solver == "BlockCG") problem->setHermitian();
   problem->setProblem();
   auto params = Teuchos::rcp(new Teuchos::ParameterList);
   params->set("Block Size", 1);
   params->set("Maximum Iterations", settings.maxIterations > 0
                                         ? settings.maxIterations
-                                        : static_cast<int>(A->getGlobalNumRows()));
+                                        : static_cast<int>(map->getGlobalNumElements()));
   params->set("Convergence Tolerance", settings.tolerance);
   int verbosity = Belos::Errors + Belos::Warnings;
   if (settings.printStatus) {
@@ -142,9 +170,11 @@ int solveTangentSystem(const Teuchos::RCP<CrsMatrix>& A, const std::vector<doubl
   }
   params->set("Verbosity", verbosity);
   params->set("Output Style", static_cast<int>(Belos::Brief));
+  if (!settings.orthogonalization.empty())
+    params->set("Orthogonalization", settings.orthogonalization);
   Teuchos::RCP<Belos::SolverManager<double, MV, OP>> solver;
   if (settings.solver == "BlockGMRES") {
-    params->set("Num Blocks", 500);
+    params->set("Num Blocks", settings.krylovSize);
     params->set("Maximum Restarts", 10);
     solver = Teuchos::rcp(new Belos::BlockGmresSolMgr<double, MV, OP>(problem, params));
   } else {

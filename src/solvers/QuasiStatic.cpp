@@ -16,98 +16,23 @@ namespace peridot {
 
 namespace {
 
-const char* kHeldField = "QuasiStatic_Held";
 // Peridigm's schedule: plain Newton for 8 iterations, then damped Newton with the tangent
 // re-assembled every 8 iterations.
 const int kPureNewtonIterations = 8;
 const int kDampedTangentInterval = 8;
 
-double globalNorm(const std::vector<double>& values, MPI_Comm comm) {
-  double local = 0, total = 0;
-  for (double v : values) local += v * v;
-  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
-  return std::sqrt(total);
-}
-
 }  // namespace
 
 QuasiStatic::QuasiStatic(const QuasiStaticConfig& config, SolverContext context)
-    : config_(config), c_(std::move(context)) {
+    : config_(config), c_(std::move(context)), problem_(c_, "QuasiStatic") {
   tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
-  const int n3 = 3 * c_.topology->numOwned;
-  held_ = c_.fields->node(kHeldField, 3);
-  baseHeld_.assign(n3, 0.0);
-  c_.conditions->markPrescribed(baseHeld_.data());
-  if (c_.planar)
-    for (int i = 0; i < c_.topology->numOwned; ++i) baseHeld_[3 * i + 2] = 1.0;
-  residual_.assign(n3, 0.0);
-  increment_.assign(n3, 0.0);
-  start_.assign(n3, 0.0);
-  stepStart_.assign(n3, 0.0);
   if (tangent_->finiteDifference() && c_.rank == 0) {
     *c_.log << "QuasiStatic: finite-difference tangent, " << tangent_->colours()
             << " colours, probe length " << tangent_->probeLength() << "\n";
   }
-}
-
-void QuasiStatic::updateHeld() {
-  // Points left without an intact bond (Peridigm's RANK_DEFICIENT_NODES): their rows of the
-  // tangent are zero, so they are held where they are, as Peridigm holds that node set.
-  const auto& t = *c_.topology;
-  const float* damage = c_.evaluator->state().bondDamage;
-  long long deficient = 0;
-  for (int i = 0; i < t.numOwned; ++i) {
-    bool intact = false;
-    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1] && !intact; ++b)
-      intact = !damage || damage[b] < 1.0f;
-    for (int d = 0; d < 3; ++d) held_[3 * i + d] = intact ? baseHeld_[3 * i + d] : 1.0;
-    if (!intact) ++deficient;
-  }
-  c_.fields->refreshGhosts(kHeldField);
-  long long total = 0;
-  MPI_Allreduce(&deficient, &total, 1, MPI_LONG_LONG, MPI_SUM, c_.comm);
-  if (total != rankDeficient_ && c_.rank == 0) {
-    *c_.log << "  " << total
-            << " point(s) without an intact bond are held fixed (RANK_DEFICIENT_NODES)\n";
-  }
-  rankDeficient_ = total;
-}
-
-double QuasiStatic::evaluateResidual(double time, bool commit) {
-  const auto& t = *c_.topology;
-  for (int k = 0; k < 3 * t.numOwned; ++k) c_.y[k] = c_.x[k] + c_.u[k];
-  // Rate models integrate over the load step: dt and the velocity of its displacement increment.
-  if (stepDt_ > 0 && c_.evaluator->readsVelocity())
-    for (int k = 0; k < 3 * t.numOwned; ++k) c_.v[k] = (c_.u[k] - stepStart_[k]) / stepDt_;
-  c_.evaluator->evaluate(stepDt_, true, commit);
-  (void)time;
-  updateHeld();
-  for (int i = 0; i < t.numOwned; ++i)
-    for (int d = 0; d < 3; ++d) {
-      const int k = 3 * i + d;
-      residual_[k] = held_[k] != 0.0 ? 0.0 : c_.volume[i] * (c_.f[k] + (c_.b ? c_.b[k] : 0.0));
-    }
-  const double norm = globalNorm(residual_, c_.comm);
-  if (!std::isfinite(norm)) {
-    throw RunError("QuasiStatic: the residual is not finite (a force or displacement diverged)");
-  }
-  return norm;
-}
-
-double QuasiStatic::heldDiagonal() const {
-  // The mean stiffness of a point's own block, V_i * (force per unit displacement), estimated
-  // from the stable-time-step stiffness sum: any positive value gives the same solution (held
-  // rows are decoupled); a typical one keeps the Krylov solver's scaling.
-  std::vector<double> stiffness(c_.topology->numOverlap, 0.0);
-  for (const auto& b : *c_.blocks)
-    b.material->stiffnessSum(c_.evaluator->state(), b.points, stiffness.data());
-  double local[2] = {0, 0}, total[2] = {0, 0};
-  for (int i = 0; i < c_.topology->numOwned; ++i) {
-    local[0] += c_.volume[i] * stiffness[i];
-    local[1] += 1;
-  }
-  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, c_.comm);
-  return total[1] > 0 && total[0] > 0 ? total[0] / total[1] : 1.0;
+  const int n3 = 3 * c_.topology->numOwned;
+  increment_.assign(n3, 0.0);
+  start_.assign(n3, 0.0);
 }
 
 int QuasiStatic::solveLinear(bool precondition) {
@@ -117,11 +42,11 @@ int QuasiStatic::solveLinear(bool precondition) {
   settings.tolerance = config_.linearTolerance;
   settings.printStatus = config_.printLinearStatus;
   settings.preconditioner = config_.preconditioner;
-  return solveTangentSystem(tangent_->matrix(), residual_, held_, settings, precondition,
-                            increment_, stats_.linearIterations);
+  return solveTangentSystem(tangent_->matrix(), problem_.residual(), problem_.held(), settings,
+                            precondition, increment_, stats_.linearIterations);
 }
 
-double QuasiStatic::lineSearch(double residualNorm, double time) {
+double QuasiStatic::lineSearch(double residualNorm) {
   // The full Newton step when it lowers the residual (always, near the solution); otherwise the
   // best of a few shorter steps (Peridigm's candidates), even if none lowers it.
   const int n3 = static_cast<int>(start_.size());
@@ -134,7 +59,7 @@ double QuasiStatic::lineSearch(double residualNorm, double time) {
   auto tryStep = [&](double alpha) {
     if (damage) std::copy(startDamage_.begin(), startDamage_.end(), damage->begin());
     for (int k = 0; k < n3; ++k) c_.u[k] = start_[k] + alpha * increment_[k];
-    return evaluateResidual(time);
+    return problem_.evaluateResidual();
   };
   double best = tryStep(1.0), bestAlpha = 1.0;
   if (best < residualNorm) return best;
@@ -153,20 +78,11 @@ void QuasiStatic::run() {
   const int n3 = 3 * t.numOwned;
   std::ostream& log = *c_.log;
   const auto& times = config_.times;
-  std::vector<double> predictor(n3, 0.0);
-  std::vector<double>& stepStart = stepStart_;
+  std::vector<double> stepStart(n3, 0.0);
   double time = times[0];
   if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
-  evaluateResidual(time, true);
-  for (int k = 0; k < n3; ++k) c_.a[k] = 0.0;
-  if (c_.stepOffset == 0) {
-    c_.outputs->write(0, time);
-    if (c_.observer) c_.observer(0, time);
-  }
-  // Initialize Predictor From Previous Solver: the first load step starts from the velocity
-  // the previous solver left.
-  if (c_.predictorFromPrevious)
-    for (int k = 0; k < n3; ++k) predictor[k] = c_.v[k];
+  problem_.evaluateResidual();
+  std::vector<double> predictor = problem_.start(time);
   if (c_.rank == 0) {
     log << "QuasiStatic: " << times.size() - 1 << " load steps, " << config_.linearSolver
         << ", preconditioner " << config_.preconditioner << "\n";
@@ -177,28 +93,15 @@ void QuasiStatic::run() {
     const double previous = time;
     time = times[step];
     const double dt = time - previous;
-    stepDt_ = dt;
-    tangent_->setProbeTimeStep(dt);
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
+    problem_.beginStep(dt, &stepStart);
+    tangent_->setProbeTimeStep(dt);
     c_.conditions->applyPrescribedDisplacement(time, c_.u);
     if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
-    double norm = evaluateResidual(time);
+    double norm = problem_.evaluateResidual();
     // Convergence: Absolute Tolerance, or Relative Tolerance x the load of the step: the
     // reactions at the held components (Peridigm) and, with body forces, the applied force.
-    double tolerance = config_.tolerance;
-    if (!config_.absoluteTolerance) {
-      double local = 0, total = 0;
-      for (int i = 0; i < t.numOwned; ++i)
-        for (int d = 0; d < 3; ++d) {
-          const int k = 3 * i + d;
-          const double reaction = baseHeld_[k] != 0.0 ? c_.volume[i] * c_.f[k] : 0.0;
-          const double applied = c_.b ? c_.volume[i] * c_.b[k] : 0.0;
-          local += reaction * reaction + applied * applied;
-        }
-      MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, c_.comm);
-      const double load = std::sqrt(total) > 0 ? std::sqrt(total) : norm;
-      tolerance *= load;
-    }
+    const double tolerance = problem_.criterion(config_.absoluteTolerance, config_.tolerance, norm);
     if (c_.rank == 0) {
       log << "Load step " << step << ", time " << previous << " -> " << time
           << ", convergence criterion " << tolerance << "\n";
@@ -211,7 +114,8 @@ void QuasiStatic::run() {
       if (c_.rank == 0) log << "  iteration " << iteration << ": residual = " << norm << "\n";
       if (iteration == 1 && (step > 1 || c_.predictorFromPrevious)) {
         // Predictor: the previous step's rate of displacement over this step.
-        for (int k = 0; k < n3; ++k) increment_[k] = held_[k] != 0.0 ? 0.0 : predictor[k] * dt;
+        for (int k = 0; k < n3; ++k)
+          increment_[k] = problem_.held()[k] != 0.0 ? 0.0 : predictor[k] * dt;
       } else {
         if (iteration > kPureNewtonIterations && !damped) {
           damped = true;
@@ -219,7 +123,8 @@ void QuasiStatic::run() {
         }
         if (!damped || (iteration - kPureNewtonIterations - 1) % kDampedTangentInterval == 0) {
           Timers::Scope timer(*c_.timers, "Tangent");
-          tangent_->assemble(c_.evaluator->state(), *c_.blocks, held_, heldDiagonal());
+          tangent_->assemble(c_.evaluator->state(), *c_.blocks, problem_.held(),
+                             problem_.heldDiagonal());
           ++stats_.tangentAssemblies;
           if (damped) dampDiagonal(*tangent_->matrix(), config_.dampedScale, config_.dampedShift);
         }
@@ -251,7 +156,7 @@ void QuasiStatic::run() {
       }
       {
         Timers::Scope timer(*c_.timers, "Line search");
-        norm = lineSearch(norm, time);
+        norm = lineSearch(norm);
       }
       ++iteration;
     }
@@ -276,13 +181,6 @@ void QuasiStatic::run() {
         throw RunError(msg.str());
       }
     }
-    // The converged state is the step's end: history models advance to it (the same force).
-    if (c_.evaluator->hasHistory()) evaluateResidual(time, true);
-    for (int k = 0; k < n3; ++k) {
-      predictor[k] = (c_.u[k] - stepStart[k]) / dt;
-      c_.v[k] = predictor[k];
-      c_.a[k] = 0.0;
-    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - stepClock).count();
     if (c_.rank == 0) {
@@ -290,10 +188,7 @@ void QuasiStatic::run() {
           << " Newton, " << linearThisStep << " linear iterations, " << seconds << " s)\n"
           << std::flush;
     }
-    if (c_.nonlinearIterations) *c_.nonlinearIterations = iteration - 1;
-    const long long record = c_.stepOffset + static_cast<long long>(step);
-    if (c_.outputs->due(record)) c_.outputs->write(record, time);
-    if (c_.observer) c_.observer(record, time);
+    problem_.finishStep(step, time, dt, stepStart, iteration - 1, predictor);
   }
   stats_.tangentBytes = tangent_->bytes();
   double tangentBytes = 0;

@@ -8,6 +8,7 @@
 
 #include "solvers/QuasiStaticConfig.hpp"
 #include "solvers/SolverContext.hpp"
+#include "solvers/StaticProblem.hpp"
 #include "solvers/Tangent.hpp"
 
 namespace peridot {
@@ -34,35 +35,31 @@ class QuasiStatic {
   Tangent& tangent() { return *tangent_; }
   // For tests: evaluates the forces at y = x + u (collective) and returns ||R||; assembles the
   // tangent at the state of the last evaluation. residual(): R = V (f + b), owned.
-  double evaluate(double time) { return evaluateResidual(time); }
-  // For tests: the step size of the trial evaluations and of the tangent's probes.
+  double evaluate(double) { return problem_.evaluateResidual(); }
+  // For tests: a load step of duration dt from u = 0 for the trial evaluations and the probes.
   void setStepDt(double dt) {
-    stepDt_ = dt;
+    testStepStart_.assign(3 * static_cast<std::size_t>(c_.topology->numOwned), 0.0);
+    problem_.beginStep(dt, &testStepStart_);
     tangent_->setProbeTimeStep(dt);
   }
-  void assembleTangent() { tangent_->assemble(c_.evaluator->state(), *c_.blocks, held_, 1.0); }
-  const std::vector<double>& residual() const { return residual_; }
+  void assembleTangent() {
+    tangent_->assemble(c_.evaluator->state(), *c_.blocks, problem_.held(), 1.0);
+  }
+  const std::vector<double>& residual() const { return problem_.residual(); }
 
  private:
-  // Evaluates the forces at y = x + u (a trial of the load step unless `commit`); returns ||R||.
-  double evaluateResidual(double time, bool commit = false);
-  void updateHeld();
-  double heldDiagonal() const;
   int solveLinear(bool precondition);  // -1: not converged
-  double lineSearch(double residualNorm, double time);
+  double lineSearch(double residualNorm);
 
   QuasiStaticConfig config_;
   SolverContext c_;
+  StaticProblem problem_;  // residual R = V (f + b), held degrees of freedom
   std::unique_ptr<Tangent> tangent_;
-  double* held_ = nullptr;          // overlap, 3 per point
-  std::vector<double> baseHeld_;    // owned: prescribed and planar z
-  std::vector<double> residual_;    // owned, 3 per point: R = V (f + b), 0 where held
-  std::vector<double> increment_;   // owned: the Newton direction
-  std::vector<double> start_;       // owned: u at the start of the step / line search
-  std::vector<double> stepStart_;   // owned: u at the start of the load step
-  double stepDt_ = 0.0;             // the load step's duration (0 before the first)
-  std::vector<float> startDamage_;  // bond damage at the start of the line search
-  long long rankDeficient_ = 0;     // points held because no intact bond is left
+  std::vector<double> increment_;      // owned: the Newton direction
+  std::vector<double> start_;          // owned: u at the start of the step / line search
+  std::vector<double> testStepStart_;  // setStepDt's step start (zero)
+  std::vector<float> startDamage_;     // bond damage at the start of the line search
+  long long rankDeficient_ = 0;        // points held because no intact bond is left
   Statistics stats_;
 };
 

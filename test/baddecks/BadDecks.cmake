@@ -141,7 +141,7 @@ peridot_baddeck(unknown_material_model DECK unknown_material_model.yaml
 peridot_baddeck(unknown_damage_model DECK unknown_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: unknown damage model "Critical Strain"]])
 peridot_baddeck(unsupported_material_model DECK unsupported_material_model.yaml
-  EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Viscoplastic Needleman Correspondence" is not supported by Peridot yet]])
+  EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Multiphysics Elastic" is not supported by Peridot yet]])
 peridot_baddeck(unsupported_damage_model DECK unsupported_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: the Peridigm damage model "Johnson Cook" is not supported by Peridot yet]])
 peridot_baddeck(ebb_two_constants DECK ebb_two_constants.yaml
@@ -198,8 +198,10 @@ peridot_baddeck(shorter_than_one_step DECK shorter_than_one_step.yaml
 # ---- unsupported features ----
 peridot_baddeck(contact_without_models DECK contact_without_models.yaml
   EXPECT [[Contact -> Models: required list is missing]])
-peridot_baddeck(noxquasistatic_unsupported DECK noxquasistatic_unsupported.yaml
-  EXPECT [[Solver -> NOXQuasiStatic: this solver is not supported by Peridot yet; use Verlet, QuasiStatic or Implicit]])
+peridot_baddeck(noxquasistatic_ml DECK noxquasistatic_ml.yaml
+  EXPECT [[Solver -> NOXQuasiStatic -> Direction -> Newton -> Linear Solver -> Preconditioner: ML (Epetra's multigrid) has no counterpart]])
+peridot_baddeck(noxquasistatic_rkpm DECK noxquasistatic_rkpm.yaml
+  EXPECT [[RKPM Kernels: Peridigm's RKPM discretization (reproducing kernel particle method]])
 peridot_baddeck(restart_unknown_key DECK restart_unknown_key.yaml
   EXPECT [[Restart -> Checkpoint Frequence: unknown parameter]])
 peridot_baddeck(restart_bad_frequency DECK restart_bad_frequency.yaml

@@ -83,6 +83,21 @@ struct Problem {
   const double* force(long long g) const {
     return fields->nodeField("Force_Density").data + 3 * local(g);
   }
+  // Every point (owned and ghost) at y = F x moving with v = Fdot x (3x3 row-major), then one
+  // evaluation of step size dt: a homogeneous motion for the rate form of the correspondence
+  // models, whose F and velocity gradient are then exact at every point.
+  void evaluateAffine(const double F[9], const double Fdot[9], double dt) {
+    double* y = fields->node("Coordinates", 3);
+    double* v = fields->node("Velocity", 3);
+    const double* x = fields->node("Model_Coordinates", 3);
+    for (int p = 0; p < topology.numOverlap; ++p)
+      for (int a = 0; a < 3; ++a) {
+        const double* X = x + 3 * p;
+        y[3 * p + a] = F[3 * a] * X[0] + F[3 * a + 1] * X[1] + F[3 * a + 2] * X[2];
+        v[3 * p + a] = Fdot[3 * a] * X[0] + Fdot[3 * a + 1] * X[1] + Fdot[3 * a + 2] * X[2];
+      }
+    evaluator->evaluate(dt);
+  }
   // Deforms every point (owned, ghosts, images) to y = x + H x, runs the models' precompute and
   // returns the stored energy density at local point k. The precompute is called directly: a
   // ghost refresh would give periodic images the undeformed period.

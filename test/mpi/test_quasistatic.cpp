@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "../common/StaticBar.hpp"
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
@@ -130,35 +131,8 @@ TEST(QuasiStaticTangent, MatchesFiniteDifferences) {
 // The bar of test/regression/decks/QuasiStaticBar: LPS, 20 x 4 x 4 points, end layers (one
 // horizon thick) following u = eps (x, -nu y, -nu z).
 std::string barDeck(double strain, int loadSteps, const std::string& preconditioner) {
-  std::ostringstream left, right;
-  int gid = 0;
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 20; ++i) {
-        ++gid;
-        const double x = (i + 0.5) * 0.5;
-        if (x < 1.51) left << gid << " ";
-        if (x > 10 - 1.51) right << gid << " ";
-      }
   std::ostringstream d;
-  d << "Peridigm:\n  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
-       "    TensorProduct3DMeshGenerator:\n"
-       "      X Origin: 0.0\n      Y Origin: -1.0\n      Z Origin: -1.0\n"
-       "      X Length: 10.0\n      Y Length: 2.0\n      Z Length: 2.0\n"
-       "      Number Points X: 20\n      Number Points Y: 4\n      Number Points Z: 4\n"
-       "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 7800.0\n"
-       "      Young's Modulus: 200.0e9\n      Poisson's Ratio: 0.25\n"
-       "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 1.51\n"
-       "  Boundary Conditions:\n    Left Node Set: \""
-    << left.str() << "\"\n    Right Node Set: \"" << right.str() << "\"\n";
-  const char* axes[3] = {"x", "y", "z"};
-  const double factor[3] = {strain, -0.25 * strain, -0.25 * strain};
-  for (const char* set : {"Left", "Right"})
-    for (int a = 0; a < 3; ++a)
-      d << "    " << set << axes[a]
-        << ":\n      Type: Prescribed Displacement\n      Node Set: " << set
-        << " Node Set\n      Coordinate: " << axes[a] << "\n      Value: \"" << factor[a] << "*t*"
-        << axes[a] << "\"\n";
+  d << testing::staticBarProblem(strain);
   d << "  Solver:\n    Final Time: 1.0\n    Peridigm Preconditioner: " << preconditioner
     << "\n    QuasiStatic:\n      Number of Load Steps: " << loadSteps
     << "\n      Relative Tolerance: 1.0e-6\n      Belos Relative Tolerance: 1.0e-12\n";
@@ -233,11 +207,12 @@ TEST(QuasiStatic, MaterialWithoutAnalyticTangentIsProbed) {
 
 TEST(QuasiStatic, UnsupportedSolversAreRefused) {
   std::string deck = tangentDeck("Elastic", "", false);
-  const std::string nox = deck.substr(0, deck.find("  Solver:")) +
-                          "  Solver:\n    Final Time: 1.0\n    NOXQuasiStatic:\n"
-                          "      Number of Load Steps: 1\n";
-  std::string message = errorOf<InputError>([&] { makeSimulation(nox); });
-  EXPECT_NE(message.find("NOXQuasiStatic"), std::string::npos) << message;
+  // NOXQuasiStatic is supported now (test_noxquasistatic.cpp); ImplicitDiffusion is not.
+  const std::string diffusion = deck.substr(0, deck.find("  Solver:")) +
+                                "  Solver:\n    Final Time: 1.0\n    ImplicitDiffusion:\n"
+                                "      Number of Load Steps: 1\n";
+  std::string message = errorOf<InputError>([&] { makeSimulation(diffusion); });
+  EXPECT_NE(message.find("ImplicitDiffusion"), std::string::npos) << message;
   EXPECT_NE(message.find("not supported"), std::string::npos) << message;
   const std::string adaptive = deck + "      Adaptive Load-Stepping:\n        Verbose: true\n";
   message = errorOf<InputError>([&] { makeSimulation(adaptive); });

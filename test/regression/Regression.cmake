@@ -76,6 +76,12 @@ peridot_identical(CorrespondenceCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/deck
                   CorrespondenceCube.xml CorrespondenceCube.e exact_correspondence.comp 2744)
 peridot_identical(CorrespondenceBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/CorrespondenceBar
                   CorrespondenceBar.xml CorrespondenceBar.e exact_correspondence.comp 0)
+# Viscoplastic Needleman Correspondence with a flaw: bitwise equal at 1-4 ranks; every point is
+# also checked against a scalar return with its own yield stress (test/mpi/test_needleman_cube.cpp).
+peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanCube
+                  NeedlemanCube.xml NeedlemanCube.e exact_correspondence.comp 1728)
+peridot_identical(NeedlemanBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanBar
+                  NeedlemanBar.xml NeedlemanBar.e exact_correspondence.comp 0)
 peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
                   ViscoBar.xml ViscoBar.e exact_visco.comp 0)
 # Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent
@@ -129,6 +135,21 @@ add_test(NAME ranks_ImplicitChainBar
     -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
 set_tests_properties(ranks_ImplicitChainBar PROPERTIES
   ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# NOXQuasiStatic (Peridigm's XML forms: matrix-free Newton, preconditioned nonlinear CG) on the
+# QuasiStatic bar: the same nodal results at 1, 2 and 3 ranks within nox.comp (not bitwise).
+foreach(deck NOXBar NOXCGBar)
+  add_test(NAME ranks_${deck}
+    COMMAND ${CMAKE_COMMAND}
+      -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/${deck}
+      -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/${deck}
+      -DDECK=${deck}.xml -DOUTPUT=${deck}.e
+      -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/nox.comp
+      "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+      -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+  set_tests_properties(ranks_${deck} PROPERTIES
+    ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+endforeach()
 # Adaptive dynamic relaxation with bonds breaking (exact global sums): bitwise equal at 1-4 ranks.
 peridot_identical(RelaxationBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/RelaxationBar
                   RelaxationBar.yaml RelaxationBar.e exact.comp 0)

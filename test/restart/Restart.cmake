@@ -45,3 +45,7 @@ peridot_restart_test(split_pals split Pals.yaml.in 16.0 8.0 10 "Damage")
 # restart.
 peridot_restart_test(split_correspondence split Correspondence.yaml.in 16.0 8.0 10
                      "Equivalent_Plastic_Strain")
+# The same bar with "Viscoplastic Needleman Correspondence": its flow rule reads the step and the
+# committed eps_p, both of which a restart must carry.
+peridot_restart_test(split_needleman split Needleman.yaml.in 16.0 8.0 10
+                     "Equivalent_Plastic_Strain")

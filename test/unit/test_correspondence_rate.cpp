@@ -91,18 +91,8 @@ TEST(FlanaganTaylor, StretchingDoesNotRotate) {
   EXPECT_NEAR(V[0], expected, 1e-15);
 }
 
-// Every point at y = F x moving with v = Fdot x, then one evaluation of step size dt.
 void move(Problem& pr, const double F[9], const double Fdot[9], double dt) {
-  double* y = pr.fields->node("Coordinates", 3);
-  double* v = pr.fields->node("Velocity", 3);
-  const double* x = pr.fields->node("Model_Coordinates", 3);
-  for (int p = 0; p < pr.topology.numOverlap; ++p)
-    for (int a = 0; a < 3; ++a) {
-      const double* X = x + 3 * p;
-      y[3 * p + a] = F[3 * a] * X[0] + F[3 * a + 1] * X[1] + F[3 * a + 2] * X[2];
-      v[3 * p + a] = Fdot[3 * a] * X[0] + Fdot[3 * a + 1] * X[1] + Fdot[3 * a + 2] * X[2];
-    }
-  pr.evaluator->evaluate(dt);
+  pr.evaluateAffine(F, Fdot, dt);
 }
 
 const double* tensorAt(Problem& pr, const char* name, int components = 9) {

@@ -254,10 +254,11 @@ TEST(DeckReference, EveryRefusedKeyIsNamedInTheError) {
                                << ": the error does not say the feature is missing: " << message;
     }
   }
-  // The table's size, so the loop cannot silently cover nothing: 68 rows with the keys of the
+  // The table's size, so the loop cannot silently cover nothing: 62 rows with the keys of the
   // refused models and lists, after Partial_Stress, Nonlinear_Solver_Iterations,
-  // Velocity_Gradient and Unrotated_Rate_Of_Deformation became supported.
-  EXPECT_GT(refused, 65);
+  // Velocity_Gradient, Unrotated_Rate_Of_Deformation and Viscoplastic Needleman Correspondence
+  // (with its six keys; its Thermal Expansion Coefficient is a new row) became supported.
+  EXPECT_GT(refused, 60);
 }
 
 }  // namespace

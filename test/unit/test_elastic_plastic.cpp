@@ -344,7 +344,7 @@ TEST(ElasticPlastic, Keys) {
   ListReader r2(p, "Materials -> EP");
   EXPECT_THROW(createMaterial(r2), InputError);
   Teuchos::ParameterList q;
-  q.set("Material Model", "Viscoplastic Needleman Correspondence");
+  q.set("Material Model", "Multiphysics Elastic");
   ListReader r3(q, "Materials -> C");
   try {
     createMaterial(r3);
