@@ -236,6 +236,12 @@ TEST(FiniteDifferenceTangent, MaterialsWithoutAnalyticTangentMatchColumnDifferen
       {keys("Elastic Plastic", moduli + "      Yield Stress: 100.0\n"), false, 0.0},
       // Yielding (the return mapping differentiated): every point is plastic at this load.
       {keys("Elastic Plastic", moduli + "      Yield Stress: 0.002\n"), false, 0.0},
+      {keys("Viscoplastic Needleman Correspondence",
+            moduli + "      Hourglass Coefficient: 0.02\n      Yield Stress: 0.002\n"
+                     "      Strain Hardening Exponent: 0.1\n      Rate Hardening Exponent: 0.05\n"
+                     "      Reference Strain Rate: 1.0\n      Reference Strain 0: 0.01\n"
+                     "      Reference Strain 1: 10.0\n"),
+       false, 1.0},
       {keys("Viscoelastic", moduli + "      lambda_i: 0.5\n      tau b: 0.3\n"), false, 1.0},
       {keys("Linearized LPS", moduli + "      Plane Stress: true\n"), true, 0.0},
   };
