@@ -70,6 +70,9 @@ class Simulation {
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
   QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
+  // For tests: the model evaluator and the blocks.
+  ModelEvaluator& evaluator() { return *evaluator_; }
+  std::vector<Block>& blocks() { return blocks_; }
   NOXQuasiStatic* noxQuasiStatic() { return noxQuasiStatic_.get(); }
   // The Adaptive Dynamic Relaxation solver of the last run() (null for the others).
   DynamicRelaxation* dynamicRelaxation() { return relaxation_.get(); }

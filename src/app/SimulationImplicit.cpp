@@ -59,6 +59,7 @@ void Simulation::checkImplicit() {
   context.temperature = temperature_;
   context.temperatureChange = temperatureChange_;
   context.stepOffset = stepOffset_;
+  context.probeLength = config_.solver.probeLength;
   context.nonlinearIterations = &nonlinearIterations_;
   context.predictorFromPrevious = stepOffset_ > 0 && config_.solver.predictorFromPrevious;
   if (config_.solver.implicit) {

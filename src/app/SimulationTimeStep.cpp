@@ -23,12 +23,17 @@ void Simulation::estimateStableTimeStep() {
   }
   stableDt_ = peridigmDt_;
   if (!config_.solver.verletLimitEstimate) return;
+  // The probes are trial evaluations (no history moves), at dt = 0: a rate model's stress
+  // does not respond to them.
   for (const auto& b : blocks_)
-    if (b.material->advancesHistory()) {
+    if (b.material->needsVelocity()) {
       throw InputError(config_.solver.path + " -> Verlet -> Stable Time Step Estimate",
-                       "\"Verlet Limit\" probes the stiffness with extra force evaluations, "
-                       "which would advance the history of block " +
-                           b.name + "'s material; use the default estimate (\"Peridigm\")");
+                       "\"Verlet Limit\" probes the stiffness with extra force evaluations at "
+                       "fixed velocities, to which the rate form of block " +
+                           b.name +
+                           "'s material does not respond; use the default estimate "
+                           "(\"Peridigm\") or \"Stress Integration\": \"Total Lagrangian "
+                           "Green Strain\"");
     }
 
   // About the reference configuration (solvers/VerletLimit.hpp).

@@ -25,8 +25,10 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
   std::vector<double>& history = s.fields->bond(kHistoryIntegral);
   // The first evaluation is the initial state at t0: the integral over [t0, t0] is zero. Each
   // later one closes a step [t_{n-1}, t_n] with the rate at its end (the current stretch).
+  // A trial evaluation (ModelState::commitHistory false) takes the integral to its state
+  // without storing it: every trial of a step starts from the integral at the step's start.
   const double dt = started_ ? s.dt : 0.0;
-  started_ = true;
+  if (s.commitHistory) started_ = true;
   if (dt == 0.0) return;
   const double sc = criticalStretch_.value();
   const double xc = lsjtOverstretchRate(1.05 * sc, sc) * s.dt;
@@ -49,8 +51,9 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
       }
       const double eps = dot / (zeta[b] * zeta[b]);
       if (!(eps >= sc)) continue;  // j_s = 0: nothing accumulates (the common case)
-      X[b] += dt * lsjtOverstretchRate(eps, sc);
-      const float broken = static_cast<float>(1.0 - lsjtDamageFactor(X[b], xc));
+      const double integral = X[b] + dt * lsjtOverstretchRate(eps, sc);
+      if (s.commitHistory) X[b] = integral;
+      const float broken = static_cast<float>(1.0 - lsjtDamageFactor(integral, xc));
       bondDamage[b] = std::max(bondDamage[b], broken);
     }
   }

@@ -121,6 +121,8 @@ SolverConfig readSolver(ListReader s) {
   const std::string preconditioner =
       s.choice("Peridigm Preconditioner", {"Full Tangent", "Block 3x3", "None"}, "Full Tangent");
   sc.predictorFromPrevious = s.boolean("Initialize Predictor From Previous Solver", false);
+  if (s.has("Finite Difference Probe Length"))
+    sc.probeLength = s.positiveNumber("Finite Difference Probe Length");
   if (s.isSublist("QuasiStatic")) {
     if (s.has("Verlet")) {
       throw InputError(s.pathOf("Verlet"), "one solver list per Solver: QuasiStatic or Verlet");

@@ -76,6 +76,9 @@ struct SolverConfig {
   // Initialize Predictor From Previous Solver: a chained QuasiStatic solver's first load step
   // starts from the velocity the previous solver left (times the step's duration).
   bool predictorFromPrevious = false;
+  // Finite Difference Probe Length: eps of the finite-difference tangents (0: Peridigm's
+  // default, 1e-6 x the smallest element radius).
+  double probeLength = 0.0;
 };
 
 struct OutputConfig {

@@ -220,8 +220,15 @@ void ModelEvaluator::setThermal(const double* temperatureChange) {
   thermal_ = expands;  // the pointer is null on a rank without points
 }
 
-void ModelEvaluator::evaluate(double dt, bool updateDamage) {
+bool ModelEvaluator::hasHistory() const {
+  for (const auto& b : blocks_)
+    if (b.material->advancesHistory() || (b.damage && b.damage->integratesInTime())) return true;
+  return false;
+}
+
+void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) {
   state_.dt = dt;
+  state_.commitHistory = commitHistory;
   {
     Timers::Scope t(timers_, "Ghost exchange");
     fields_.refreshGhosts("Coordinates");
@@ -279,6 +286,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage) {
   state_.breakableBondDamage = nullptr;
   state_.breakableBondBroken = nullptr;
   state_.fusedCriticalStretch = 0.0;
+  state_.commitHistory = true;
 }
 
 bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {

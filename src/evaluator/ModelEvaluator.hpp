@@ -48,8 +48,16 @@ class ModelEvaluator {
   void initialize();
   // Computes the internal force density of all owned points from the current coordinates
   // (owned values; ghosts are refreshed here). With `updateDamage` false no bond breaks (the
-  // linearized stiffness is probed this way).
-  void evaluate(double dt, bool updateDamage = true);
+  // linearized stiffness is probed this way). With `commitHistory` false the evaluation is a
+  // trial: history models compute the force from the history of the step's start and store none
+  // (ModelState::commitHistory); a solver commits a converged step with one committing
+  // evaluation at its final state.
+  void evaluate(double dt, bool updateDamage = true, bool commitHistory = true);
+  // Whether some block's material or damage model keeps a history that a trial evaluation leaves
+  // alone (then a converged step needs its committing evaluation).
+  bool hasHistory() const;
+  // Whether some block's material reads the velocities (rate models).
+  bool readsVelocity() const { return velocityGhosts_; }
   // Thermal loading (after initialize): `temperatureChange` is the owned Delta T the run's
   // temperature conditions maintain. Materials with a thermal expansion coefficient then see the
   // thermal strain alpha Delta T of every point (own and ghost), refreshed at each evaluation;

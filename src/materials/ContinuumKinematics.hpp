@@ -45,6 +45,9 @@ class ContinuumKinematics : public MaterialModel {
   void stiffnessSum(const ModelState& state, const std::vector<int>& points,
                     double* sum) const override;
   std::string family() const override { return "continuum kinematics"; }
+  // f_p reads the positions of p and its neighbours only (its bonds, triangles and tetrahedra
+  // are among them): probed by finite differences over the bond pattern.
+  TangentReach tangentReach() const override { return TangentReach::Bond; }
 
   // The interaction constants for horizon delta and dimension 2 or 3 (C2 = 0 in 3D, C3 = 0 in
   // 2D), as this model calibrates them (restricted neighbour sets; doc/theory/cki.md).

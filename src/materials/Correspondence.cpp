@@ -462,6 +462,8 @@ void CorrespondenceMaterial::computeForce(const ModelState& s, const std::vector
     else
       sides ? forceLoop<false, true, false>(s, points) : forceLoop<false, false, false>(s, points);
   }
+  // A trial keeps the history of the step's start (precompute wrote only the scratch copies).
+  if (!s.commitHistory) return;
   if (rateForm()) {
     for (int i : points) {
       std::copy(unrotatedNew_.begin() + 9 * i, unrotatedNew_.begin() + 9 * i + 9,

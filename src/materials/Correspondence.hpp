@@ -95,6 +95,8 @@ class CorrespondenceMaterial : public MaterialModel {
   bool needsVelocity() const override { return rateForm(); }
   bool rateForm() const { return integration_ == StressIntegration::HypoelasticRate; }
   std::string family() const override { return "correspondence"; }
+  // f_i reads A and F of its neighbours (their families): probed by finite differences.
+  TangentReach tangentReach() const override { return TangentReach::Family; }
   // K and F use the same weights, so F is exact for affine motion whatever omega is.
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
 

@@ -49,6 +49,9 @@ Elastic::Elastic(ListReader& p) {
     dilatationModulus_ = constants_.bulkModulus;
   }
   partialStress_ = p.boolean("Compute Partial Stress", false);
+  // Peridigm's Elastic takes its Jacobian from Sacado unless this is false, and then by finite
+  // differences: ours is analytic (the same values) unless this is false.
+  analyticTangent_ = p.boolean("Apply Automatic Differentiation Jacobian", true);
   acceptCommonMaterialKeys(p, true, true, true);
 }
 
@@ -427,7 +430,9 @@ PERIDOT_REGISTER_MATERIAL(
          "bool, default false: scale the deviatoric modulus of each point so that pure shear of "
          "its discrete neighbourhood stores the continuum energy (Peridigm's option; in 2D the "
          "one in-plane shear mode)"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Apply Automatic Differentiation Jacobian",
+         "bool, default true: the implicit solvers' tangent is analytic; false: probed by finite "
+         "differences (as Peridigm without Sacado)"},
         {"Thermal Expansion Coefficient",
          "number, default 0: alpha; with a Prescribed Temperature every bond's extension is taken "
          "less alpha Delta T |xi| (Delta T of the end whose force state it is), in the "
@@ -435,6 +440,7 @@ PERIDOT_REGISTER_MATERIAL(
         {"Compute Partial Stress",
          "bool, default false: true maintains Peridigm's partial stress, sum over the point's "
          "bonds of its own pair force t Y/|Y| (x) xi V_j, as the output Partial_Stress"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

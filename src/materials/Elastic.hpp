@@ -31,6 +31,7 @@ class Elastic : public MaterialModel {
   void precompute(const ModelState& state, const std::vector<int>& points) override;
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   TangentReach tangentReach() const override { return TangentReach::Family; }
+  bool hasAnalyticTangent() const override { return analyticTangent_; }
   void addStiffness(const ModelState& state, const std::vector<int>& points,
                     TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
@@ -52,6 +53,7 @@ class Elastic : public MaterialModel {
   static constexpr const char* kPartialStress = "Partial_Stress";
 
  private:
+  bool analyticTangent_ = true;
   // The bond loops, instantiated per option (influence array, bond damage, one-sided bonds,
   // smooth law) so that their bodies have no branch and vectorize.
   // kThermal: extensions less the thermal part, e = |Y| - |xi| - alpha Delta T |xi| (each end's

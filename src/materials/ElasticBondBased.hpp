@@ -24,6 +24,7 @@ class ElasticBondBased : public MaterialModel {
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   TangentReach tangentReach() const override { return TangentReach::Bond; }
+  bool hasAnalyticTangent() const override { return true; }
   void addStiffness(const ModelState& state, const std::vector<int>& points,
                     TangentBlocks& K) const override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,

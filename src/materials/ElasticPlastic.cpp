@@ -173,14 +173,19 @@ void ElasticPlastic::precomputeLoop(const ModelState& s, const std::vector<int>&
 
 void ElasticPlastic::computeForce(const ModelState& s, const std::vector<int>& points) {
   withDamageAndSides(s, [&](auto damage, auto sides) {
-    forceLoop<decltype(damage)::value, decltype(sides)::value>(s, points);
+    if (s.commitHistory)
+      forceLoop<decltype(damage)::value, decltype(sides)::value, true>(s, points);
+    else
+      forceLoop<decltype(damage)::value, decltype(sides)::value, false>(s, points);
   });
-  for (int i : points) lambda_[i] += return_[3 * i + 2];
+  // A trial leaves e^dp and Lambda at the step's start (the force is the same either way).
+  if (s.commitHistory)
+    for (int i : points) lambda_[i] += return_[3 * i + 2];
 }
 
 // Both ends' force states on each bond of i (pull form): t = (1 - d)(3 K theta / m zeta +
 // (1 - d) t_d), t_d = scale alpha (e^d - e^dp); each end's e^dp then advances by dLambda t_d.
-template <bool kDamage, bool kSides>
+template <bool kDamage, bool kSides, bool kCommit>
 void ElasticPlastic::forceLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
@@ -213,8 +218,10 @@ void ElasticPlastic::forceLoop(const ModelState& s, const std::vector<int>& poin
       const double ownJ = kSides ? ((s.bondSides[b] >> 1) & 1) : 1.0;
       ti *= ownI;
       tj *= ownJ;
-      edp[b] += ownI * (tdI * dLambdaI);
-      edpOfNeighbor[b] += ownJ * (tdJ * ret[3 * j + 2]);
+      if constexpr (kCommit) {
+        edp[b] += ownI * (tdI * dLambdaI);
+        edpOfNeighbor[b] += ownJ * (tdJ * ret[3 * j + 2]);
+      }
       const double vj = s.volume[j];
       f0 += (ti + tj) * Y0 / dY * vj;
       f1 += (ti + tj) * Y1 / dY * vj;
@@ -267,8 +274,10 @@ PERIDOT_REGISTER_MATERIAL(
         {"Disable Plasticity", "bool, default false: never yield (the LPS with omega = 1)"},
         {"Planar Problem", "bool: only false (Peridigm's planar variant is not supported)"},
         {"Thickness", "not supported (belongs to \"Planar Problem\")"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Apply Automatic Differentiation Jacobian",
+         "bool: accepted; the implicit tangent is probed by finite differences"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

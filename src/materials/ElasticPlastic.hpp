@@ -35,7 +35,7 @@ class ElasticPlastic : public MaterialModel {
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kModuli}; }
   std::vector<std::string> fieldsToSyncAfterPrecompute() const override { return {kReturn}; }
   void precompute(const ModelState& state, const std::vector<int>& points) override;
-  // Also advances the plastic history by one step (e^dp, Lambda): call once per step.
+  // Also advances the plastic history by one step (e^dp, Lambda) when the state commits.
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   // The recoverable part: 1/2 K theta^2 + alpha/2 sum (1 - d) (e^d - e^dp)^2 V.
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
@@ -46,6 +46,8 @@ class ElasticPlastic : public MaterialModel {
   std::vector<std::string> historyNodeFields() const override { return {kLambda}; }
   bool advancesHistory() const override { return true; }
   std::string family() const override { return "elastic-plastic state-based"; }
+  // The neighbours' dilatation and return enter f_i: probed by finite differences.
+  TangentReach tangentReach() const override { return TangentReach::Family; }
 
   static constexpr const char* kWeightedVolume = "Weighted_Volume";
   static constexpr const char* kDilatation = "Dilatation";
@@ -67,7 +69,7 @@ class ElasticPlastic : public MaterialModel {
  private:
   template <bool kDamage, bool kSides>
   void precomputeLoop(const ModelState& state, const std::vector<int>& points);
-  template <bool kDamage, bool kSides>
+  template <bool kDamage, bool kSides, bool kCommit>
   void forceLoop(const ModelState& state, const std::vector<int>& points);
   std::string name_;
   double density_ = 0, yieldStress_ = 0;

@@ -24,8 +24,10 @@ PERIDOT_REGISTER_MATERIAL(
         {"Disable Plasticity", "bool, default false: never yield"},
         {"Planar Problem", "bool: only false (Peridigm's planar variant is not supported)"},
         {"Thickness", "not supported (belongs to \"Planar Problem\")"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Apply Automatic Differentiation Jacobian",
+         "bool: accepted; the implicit tangent is probed by finite differences"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

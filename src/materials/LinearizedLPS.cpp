@@ -178,9 +178,11 @@ PERIDOT_REGISTER_MATERIAL(
          "bool, default false: 2D plane stress (E and nu are the 3D constants; the dilatation is "
          "the 3D one)"},
         {"Plane Strain", "bool, default false: 2D plane strain"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Apply Automatic Differentiation Jacobian",
+         "bool: accepted; the implicit tangent is probed by finite differences"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported yet"},
         {"Compute Partial Stress", "bool, default false: true is not supported yet"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

@@ -31,6 +31,8 @@ class LinearizedLPS : public MaterialModel {
                            double* energyDensity) const override;
   std::vector<std::string> outputFields() const override { return {kWeightedVolume, kDilatation}; }
   std::string family() const override { return "linearized LPS"; }
+  // No analytic tangent: probed by finite differences over the family pattern.
+  TangentReach tangentReach() const override { return TangentReach::Family; }
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
   bool acceptsSmoothBondLaw() const override { return true; }

@@ -69,6 +69,15 @@ struct ModelState {
   // The discretization's bond filters (pre-cracks), for models that form interactions between
   // neighbours (continuum kinematics); null when none.
   const std::vector<BondFilter>* bondFilters = nullptr;
+  // Trial and commit evaluations (Peridigm's states N and N+1). True (Verlet, and the final
+  // evaluation of a converged load or time step): a model with a history (advancesHistory(), a
+  // damage model's own bond history) advances it from the start of the step to this state and
+  // stores it. False (a trial: a Newton iterate, a line-search point, a finite-difference
+  // probe, a relaxation iteration): the force is computed from the history at the start of the
+  // step exactly as a committing evaluation at the same state would compute it, and no history
+  // is written, so any number of trials may precede the one commit. (Bond damage is not such a
+  // history: it is irreversible and the solvers restore it themselves where they must.)
+  bool commitHistory = true;
 };
 
 // X0^2 + X1^2 + X2^2 in one fixed rounding. With FMA hardware the compiler may contract a sum of
@@ -140,19 +149,30 @@ class MaterialModel {
   // model: the bond-based spring constant 18 K / (pi delta^4) / |xi| times the neighbour volume.
   virtual void stiffnessSum(const ModelState& state, const std::vector<int>& points,
                             double* sum) const;
-  // The tangent for implicit solvers: which entries it fills, and their values. addStiffness adds
-  // K_ac = -V_a d f_a / d y_c (the stiffness in force units, symmetric for the elastic models) of
-  // the families of `points` into `K`, at the current coordinates and bond damage; called after
-  // an evaluation (precomputed fields such as the dilatation are current).
+  // The tangent for implicit solvers. tangentReach(): which entries the force of a point
+  // depends on (its sparsity); None: the model cannot be used by the implicit solvers.
+  // hasAnalyticTangent(): addStiffness adds K_ac = -V_a d f_a / d y_c (the stiffness in force
+  // units, symmetric for the elastic models) of the families of `points` into `K`, at the
+  // current coordinates and bond damage; called after an evaluation (precomputed fields such as
+  // the dilatation are current). Without it the solvers probe K by central finite differences of
+  // trial evaluations (solvers/FiniteDifferenceTangent.hpp): a model only declares its reach,
+  // and must then compute the force of owned point a from the coordinates (and, for a rate
+  // model, the velocities) of the points within its reach of a only: Bond, a and its neighbours;
+  // Family, a, its neighbours and theirs.
   virtual TangentReach tangentReach() const { return TangentReach::None; }
+  virtual bool hasAnalyticTangent() const { return false; }
   virtual void addStiffness(const ModelState&, const std::vector<int>&, TangentBlocks&) const {}
   // Node fields the model maintains that a user may output (e.g. "Dilatation").
   virtual std::vector<std::string> outputFields() const { return {}; }
   // Node fields that carry history from step to step (e.g. the plastic multiplier "Lambda"):
   // the checkpoint saves and restores their owned values. (Bond fields are always saved.)
   virtual std::vector<std::string> historyNodeFields() const { return {}; }
-  // True when computeForce advances a history (plastic or viscous state) by one step: such a
-  // model cannot be probed by extra force evaluations (the "Verlet Limit" time step estimate).
+  // True when computeForce advances a history (plastic or viscous state) by one step. Such a
+  // model must honour ModelState::commitHistory: trial evaluations (commitHistory false) read
+  // the history of the start of the step and write none of it; precompute never writes it.
+  // The implicit solvers, dynamic relaxation and the "Verlet Limit" estimate probe with trials
+  // and commit once per converged step. Rate models (ModelState::dt, velocity) also get, in the
+  // load-stepped solvers, dt = the load step and velocity = its displacement increment / dt.
   virtual bool advancesHistory() const { return false; }
   // True when the model reads ModelState::velocity of its points and their neighbours (the rate
   // form of the correspondence models): the evaluator then ghosts the velocities.

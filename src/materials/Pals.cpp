@@ -462,7 +462,8 @@ PERIDOT_REGISTER_MATERIAL(
         {"Deviatoric Influence Function",
          "\"One\" (default), \"Parabolic Decay\" or \"Gaussian\": sigma_0, the trial influence "
          "function of the deviatoric energy"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Apply Automatic Differentiation Jacobian", "bool: accepted; the tangent is analytic"},
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

@@ -36,6 +36,7 @@ class Pals : public MaterialModel {
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
                            double* energyDensity) const override;
   TangentReach tangentReach() const override { return TangentReach::Family; }
+  bool hasAnalyticTangent() const override { return true; }
   void addStiffness(const ModelState& state, const std::vector<int>& points,
                     TangentBlocks& K) const override;
   std::vector<std::string> outputFields() const override;

@@ -69,20 +69,29 @@ void Viscoelastic::precompute(const ModelState& s, const std::vector<int>& point
 }
 
 void Viscoelastic::computeForce(const ModelState& s, const std::vector<int>& points) {
+  if (!s.commitHistory) {
+    withDamageAndSides<false>(s, points);
+    return;
+  }
+  withDamageAndSides<true>(s, points);
+}
+
+template <bool kCommit>
+void Viscoelastic::withDamageAndSides(const ModelState& s, const std::vector<int>& points) {
   if (s.bondDamage) {
     if (s.bondSides)
-      forceLoop<true, true>(s, points);
+      forceLoop<true, true, kCommit>(s, points);
     else
-      forceLoop<true, false>(s, points);
+      forceLoop<true, false, kCommit>(s, points);
   } else {
     if (s.bondSides)
-      forceLoop<false, true>(s, points);
+      forceLoop<false, true, kCommit>(s, points);
     else
-      forceLoop<false, false>(s, points);
+      forceLoop<false, false, kCommit>(s, points);
   }
 }
 
-template <bool kDamage, bool kSides>
+template <bool kDamage, bool kSides, bool kCommit>
 void Viscoelastic::forceLoop(const ModelState& s, const std::vector<int>& points) {
   // Exact integration of tau de^b/dt = e^d - e^b over a step with e^d linear in time. For
   // dt -> 0 (no step yet) beta -> dt / (2 tau) -> 0 and D -> 1: the back state does not move.
@@ -127,10 +136,12 @@ void Viscoelastic::forceLoop(const ModelState& s, const std::vector<int>& points
         ti *= s.bondSides[b] & 1;
         tj *= (s.bondSides[b] >> 1) & 1;
       }
-      edI[b] = edNewI;
-      ebI[b] = ebNewI;
-      edJ[b] = edNewJ;
-      ebJ[b] = ebNewJ;
+      if constexpr (kCommit) {
+        edI[b] = edNewI;
+        ebI[b] = ebNewI;
+        edJ[b] = edNewJ;
+        ebJ[b] = ebNewJ;
+      }
       const double vj = s.volume[j];
       f0 += (ti + tj) * Y0 / dY * vj;
       f1 += (ti + tj) * Y1 / dY * vj;
@@ -182,6 +193,7 @@ PERIDOT_REGISTER_MATERIAL(
          "(Maxwell) branch; the long-time shear modulus is (1 - lambda_i) G"},
         {"tau b", "positive number, required: relaxation time of the branch"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

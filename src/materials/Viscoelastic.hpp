@@ -28,7 +28,7 @@ class Viscoelastic : public MaterialModel {
   }
   std::vector<std::string> fieldsToSyncAfterPrecompute() const override { return {kDilatation}; }
   void precompute(const ModelState& state, const std::vector<int>& points) override;
-  // Also advances the back extension by one step of state.dt: call once per step.
+  // Also advances the back extension by one step of state.dt when the state commits.
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   // The free energy 1/2 K theta^2 + alpha/2 sum (1 - d) [(1 - lambda_i) e^d^2 +
   // lambda_i (e^d - e^b)^2] V.
@@ -36,6 +36,7 @@ class Viscoelastic : public MaterialModel {
                            double* energyDensity) const override;
   std::vector<std::string> outputFields() const override { return {kWeightedVolume, kDilatation}; }
   std::string family() const override { return "viscoelastic state-based"; }
+  TangentReach tangentReach() const override { return TangentReach::Family; }
 
   static constexpr const char* kWeightedVolume = "Weighted_Volume";
   static constexpr const char* kDilatation = "Dilatation";
@@ -47,7 +48,9 @@ class Viscoelastic : public MaterialModel {
       "Deviatoric_Extension_Previous_Step_Of_Neighbor";
 
  private:
-  template <bool kDamage, bool kSides>
+  template <bool kCommit>
+  void withDamageAndSides(const ModelState& state, const std::vector<int>& points);
+  template <bool kDamage, bool kSides, bool kCommit>
   void forceLoop(const ModelState& state, const std::vector<int>& points);
   double density_ = 0, lambdaI_ = 0, tauB_ = 0;
   ElasticConstants constants_;

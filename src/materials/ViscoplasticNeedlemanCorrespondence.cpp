@@ -149,8 +149,10 @@ PERIDOT_REGISTER_MATERIAL(
          "\"Hypoelastic Rate\" only (the default, as Peridigm: unrotated Cauchy stress advanced "
          "by the Flanagan-Taylor rate of deformation)"},
         {"Apply Shear Correction Factor", "not available (as in Peridigm)"},
-        {"Apply Automatic Differentiation Jacobian", "bool: accepted, unused (explicit only)"},
+        {"Apply Automatic Differentiation Jacobian",
+         "bool: accepted; the implicit tangent is probed by finite differences"},
         {"Thermal Expansion Coefficient", "number: only 0 is supported"},
-        {"Finite Difference Probe Length", "positive number: accepted, unused"}}))
+        {"Finite Difference Probe Length",
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
 
 }  // namespace peridot

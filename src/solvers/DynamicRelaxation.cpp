@@ -16,13 +16,15 @@ namespace peridot {
 
 DynamicRelaxation::DynamicRelaxation(const DynamicRelaxationConfig& config, SolverContext context)
     : config_(config), c_(std::move(context)) {
+  // History models relax with trial evaluations and commit once per load step; a rate model
+  // (velocities) would see the relaxation's fictitious velocities in the stiffness probe below.
   for (const auto& b : *c_.blocks)
-    if (b.material->advancesHistory()) {
+    if (b.material->needsVelocity()) {
       throw InputError(config_.path,
                        "the material of block " + b.name +
-                           " has a history (plasticity, viscosity), which every relaxation "
-                           "iteration would advance: adaptive dynamic relaxation needs elastic "
-                           "materials; use QuasiStatic or Verlet");
+                           " integrates a rate (the hypoelastic rate form), which adaptive "
+                           "dynamic relaxation does not support; use \"Stress Integration\": "
+                           "\"Total Lagrangian Green Strain\", QuasiStatic or Verlet");
     }
   const auto& t = *c_.topology;
   const int n = t.numOwned, n3 = 3 * n;
@@ -61,11 +63,11 @@ double DynamicRelaxation::sum(const std::vector<double>& perPoint) {
   return exactSum(perPoint, c_.topology->globalNumPoints, c_.comm);
 }
 
-double DynamicRelaxation::evaluate(double time, bool updateDamage) {
+double DynamicRelaxation::evaluate(double time, bool updateDamage, bool commit) {
   const auto& t = *c_.topology;
   for (int k = 0; k < 3 * t.numOwned; ++k) c_.y[k] = c_.x[k] + c_.u[k];
   c_.evaluator->setTime(time);
-  c_.evaluator->evaluate(0.0, updateDamage);
+  c_.evaluator->evaluate(stepDt_, updateDamage, commit);
   for (int i = 0; i < t.numOwned; ++i) {
     double load = 0;
     for (int d = 0; d < 3; ++d) {
@@ -185,7 +187,7 @@ void DynamicRelaxation::run() {
         c_.conditions->applyPrescribedTemperature(time, c_.temperature, c_.temperatureChange),
         c_.comm, true);
   }
-  evaluate(time, false);
+  evaluate(time, false, true);
   for (int k = 0; k < n3; ++k) c_.a[k] = 0.0;
   if (c_.stepOffset == 0) {
     c_.outputs->write(0, time);
@@ -201,6 +203,7 @@ void DynamicRelaxation::run() {
     const auto stepClock = std::chrono::steady_clock::now();
     const double previous = time;
     time = times[step];
+    stepDt_ = time - previous;
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
     c_.conditions->applyPrescribedDisplacement(time, c_.u);
     if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
@@ -239,6 +242,8 @@ void DynamicRelaxation::run() {
       if (!(now > damage)) break;
       damage = now;
     }
+    // The relaxed state is the step's end: history models advance to it (same force).
+    if (c_.evaluator->hasHistory()) evaluate(time, false, true);
     const double damageGrowth = damage - damageBefore;
     stats_.iterations += iterations;
     stats_.iterationsPerStep.push_back(iterations);

@@ -41,7 +41,9 @@ class DynamicRelaxation {
   // Forces at y = x + u (bonds frozen unless `updateDamage`); fills force_ = f + b on the free
   // components (0 on the held ones) and returns the load: the norm of the reactions at the held
   // components and of the applied body force (Peridigm's QuasiStatic measure). Collective.
-  double evaluate(double time, bool updateDamage);
+  // A trial evaluation of the load step (history models keep the step's start) unless `commit`.
+  double evaluate(double time, bool updateDamage, bool commit = false);
+  double stepDt_ = 0.0;   // the load step's duration (dt of history models' evaluations)
   double residualNorm();  // || V (f + b) || over the free components, exact
   double damageSum();     // sum of bond damage over the owned bond entries, exact
   // Relaxes the current load step from rest; returns the iterations taken, or -1 when the

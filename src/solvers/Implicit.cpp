@@ -19,7 +19,13 @@ const char* kHeldField = "Implicit_Held";
 Implicit::Implicit(const ImplicitConfig& config, double initialTime, long long numSteps,
                    SolverContext context)
     : config_(config), c_(std::move(context)), initialTime_(initialTime), numSteps_(numSteps) {
-  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path);
+  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
+  // Newmark: v = v~ + gamma dt a with a = (u - u~) / (beta dt^2), so dv/du = gamma / (beta dt).
+  tangent_->setProbeTimeStep(config_.dt, config_.gamma / (config_.beta * config_.dt));
+  if (tangent_->finiteDifference() && c_.rank == 0) {
+    *c_.log << "Implicit: finite-difference tangent, " << tangent_->colours()
+            << " colours, probe length " << tangent_->probeLength() << "\n";
+  }
   const int numOwned = c_.topology->numOwned;
   const int n3 = 3 * numOwned;
   held_ = c_.fields->node(kHeldField, 3);
@@ -46,11 +52,11 @@ Implicit::Implicit(const ImplicitConfig& config, double initialTime, long long n
   increment_.assign(n3, 0.0);
 }
 
-double Implicit::evaluateResidual(double time) {
+double Implicit::evaluateResidual(double time, bool commit) {
   const auto& t = *c_.topology;
   for (int k = 0; k < 3 * t.numOwned; ++k) c_.y[k] = c_.x[k] + c_.u[k];
   c_.evaluator->setTime(time);
-  c_.evaluator->evaluate(config_.dt);
+  c_.evaluator->evaluate(config_.dt, true, commit);
   double local = 0;
   for (int i = 0; i < t.numOwned; ++i)
     for (int d = 0; d < 3; ++d) {
@@ -152,6 +158,8 @@ void Implicit::run() {
       norm = evaluateResidual(time);
       ++iteration;
     }
+    // The converged state is the step's end: history models advance to it (the same force).
+    if (c_.evaluator->hasHistory()) evaluateResidual(time, true);
     stats_.newtonIterations += iteration;
     stats_.newtonIterationsPerStep.push_back(iteration);
     if (norm > config_.tolerance) {

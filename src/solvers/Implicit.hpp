@@ -39,7 +39,8 @@ class Implicit {
  private:
   // Evaluates the forces at y = x + u and the residual R = V (f + b - rho a) on the free
   // components; returns Peridigm's norm beta dt^2 |f + b - rho a| (per unit volume).
-  double evaluateResidual(double time);
+  // A trial evaluation of the step (history models keep its start) unless `commit`.
+  double evaluateResidual(double time, bool commit = false);
   // a and v of every free component from u and the predictors (Newmark's relations).
   void updateRates();
 

@@ -67,7 +67,8 @@ NOXQuasiStatic::NOXQuasiStatic(const NOXQuasiStaticConfig& config, SolverContext
   // The tangent is assembled when the Jacobian is the assembled one, or when a preconditioner
   // is built from it; matrix-free without a preconditioner needs none (any material).
   const bool needsTangent = !config_.matrixFree || config_.linear.preconditioner != "None";
-  if (needsTangent) tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path);
+  if (needsTangent)
+    tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
   const auto& map = c_.topology->ownedMap3;
   matrixFree_ = Teuchos::rcp(new MatrixFreeStiffness(*this, map));
   baseXStore_ = std::make_unique<TpetraVector>(map);
@@ -286,6 +287,8 @@ void NOXQuasiStatic::run() {
     time = times[step];
     const double dt = time - previous;
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
+    problem_.beginStep(dt, &stepStart);
+    if (tangent_) tangent_->setProbeTimeStep(dt);
     if (hasDamage) stepDamage_ = c_.fields->bondFloat("Bond_Damage");
     tangentX_.reset();  // another load step: other prescribed values, other damage
     c_.conditions->applyPrescribedDisplacement(time, c_.u);

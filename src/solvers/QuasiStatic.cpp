@@ -25,7 +25,11 @@ const int kDampedTangentInterval = 8;
 
 QuasiStatic::QuasiStatic(const QuasiStaticConfig& config, SolverContext context)
     : config_(config), c_(std::move(context)), problem_(c_, "QuasiStatic") {
-  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path);
+  tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
+  if (tangent_->finiteDifference() && c_.rank == 0) {
+    *c_.log << "QuasiStatic: finite-difference tangent, " << tangent_->colours()
+            << " colours, probe length " << tangent_->probeLength() << "\n";
+  }
   const int n3 = 3 * c_.topology->numOwned;
   increment_.assign(n3, 0.0);
   start_.assign(n3, 0.0);
@@ -90,6 +94,8 @@ void QuasiStatic::run() {
     time = times[step];
     const double dt = time - previous;
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
+    problem_.beginStep(dt, &stepStart);
+    tangent_->setProbeTimeStep(dt);
     c_.conditions->applyPrescribedDisplacement(time, c_.u);
     if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
     double norm = problem_.evaluateResidual();

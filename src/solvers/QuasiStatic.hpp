@@ -36,6 +36,12 @@ class QuasiStatic {
   // For tests: evaluates the forces at y = x + u (collective) and returns ||R||; assembles the
   // tangent at the state of the last evaluation. residual(): R = V (f + b), owned.
   double evaluate(double) { return problem_.evaluateResidual(); }
+  // For tests: a load step of duration dt from u = 0 for the trial evaluations and the probes.
+  void setStepDt(double dt) {
+    testStepStart_.assign(3 * static_cast<std::size_t>(c_.topology->numOwned), 0.0);
+    problem_.beginStep(dt, &testStepStart_);
+    tangent_->setProbeTimeStep(dt);
+  }
   void assembleTangent() {
     tangent_->assemble(c_.evaluator->state(), *c_.blocks, problem_.held(), 1.0);
   }
@@ -49,10 +55,11 @@ class QuasiStatic {
   SolverContext c_;
   StaticProblem problem_;  // residual R = V (f + b), held degrees of freedom
   std::unique_ptr<Tangent> tangent_;
-  std::vector<double> increment_;   // owned: the Newton direction
-  std::vector<double> start_;       // owned: u at the start of the step / line search
-  std::vector<float> startDamage_;  // bond damage at the start of the line search
-  long long rankDeficient_ = 0;     // points held because no intact bond is left
+  std::vector<double> increment_;      // owned: the Newton direction
+  std::vector<double> start_;          // owned: u at the start of the step / line search
+  std::vector<double> testStepStart_;  // setStepDt's step start (zero)
+  std::vector<float> startDamage_;     // bond damage at the start of the line search
+  long long rankDeficient_ = 0;        // points held because no intact bond is left
   Statistics stats_;
 };
 

@@ -14,6 +14,7 @@
 #include "fields/FieldManager.hpp"
 #include "output/OutputManager.hpp"
 #include "parallel/Topology.hpp"
+#include "solvers/FiniteDifferenceTangent.hpp"
 
 namespace peridot {
 
@@ -45,9 +46,24 @@ struct SolverContext {
   // predictor when predictorFromPrevious is set (QuasiStatic).
   long long stepOffset = 0;
   bool predictorFromPrevious = false;
+  // Solver -> Finite Difference Probe Length (0: Peridigm's default, 1e-6 x the smallest
+  // element radius), for the tangents of materials without an analytic one.
+  double probeLength = 0.0;
   // Where the solver records the nonlinear iterations of its last step before writing outputs
   // (Peridigm's Nonlinear_Solver_Iterations); may be null.
   long long* nonlinearIterations = nullptr;
+
+  // What a Tangent needs to probe materials without an analytic tangent.
+  ProbeSettings probe() const {
+    ProbeSettings p;
+    p.evaluator = evaluator;
+    p.y = y;
+    p.v = v;
+    p.f = f;
+    p.volume = volume;
+    p.probeLength = probeLength;
+    return p;
+  }
 };
 
 }  // namespace peridot

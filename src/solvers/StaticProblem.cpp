@@ -52,10 +52,13 @@ void StaticProblem::updateHeld() {
   rankDeficient_ = total;
 }
 
-double StaticProblem::evaluateResidual() {
+double StaticProblem::evaluateResidual(bool commit) {
   const auto& t = *c_.topology;
   for (int k = 0; k < 3 * t.numOwned; ++k) c_.y[k] = c_.x[k] + c_.u[k];
-  c_.evaluator->evaluate(0.0);
+  // Rate models integrate over the load step: dt and the velocity of its displacement increment.
+  if (stepDt_ > 0 && stepStart_ && c_.evaluator->readsVelocity())
+    for (int k = 0; k < 3 * t.numOwned; ++k) c_.v[k] = (c_.u[k] - (*stepStart_)[k]) / stepDt_;
+  c_.evaluator->evaluate(stepDt_, true, commit);
   updateHeld();
   for (int i = 0; i < t.numOwned; ++i)
     for (int d = 0; d < 3; ++d) {
@@ -120,6 +123,8 @@ void StaticProblem::finishStep(std::size_t step, double time, double dt,
                                const std::vector<double>& stepStart, int iterations,
                                std::vector<double>& rate) {
   const int n3 = 3 * c_.topology->numOwned;
+  // The converged state is the step's end: history models advance to it (the same force).
+  if (c_.evaluator->hasHistory()) evaluateResidual(true);
   rate.resize(n3);
   for (int k = 0; k < n3; ++k) {
     rate[k] = (c_.u[k] - stepStart[k]) / dt;

@@ -14,8 +14,16 @@ class StaticProblem {
  public:
   // `name` prefixes the messages (the solver's deck name).
   StaticProblem(SolverContext& context, const char* name);
-  // Evaluates the forces at y = x + u and returns ||R|| (L2, all ranks). Collective.
-  double evaluateResidual();
+  // Evaluates the forces at y = x + u and returns ||R|| (L2, all ranks). A trial of the load
+  // step (history models keep its start, ModelState::commitHistory) unless `commit`; finishStep
+  // commits. Collective.
+  double evaluateResidual(bool commit = false);
+  // A load step of duration dt from the owned displacement `stepStart` (kept by the caller):
+  // rate models see dt and the velocity (u - stepStart) / dt of the step's increment.
+  void beginStep(double dt, const std::vector<double>* stepStart) {
+    stepDt_ = dt;
+    stepStart_ = stepStart;
+  }
   const std::vector<double>& residual() const { return residual_; }
   // Overlap, 3 per point: 1 where a degree of freedom is held (ghosts refreshed).
   const double* held() const { return held_; }
@@ -29,7 +37,8 @@ class StaticProblem {
   // (call after evaluateResidual at the step's prescribed displacements); ||R|| when there is
   // no load. Collective.
   double criterion(bool absolute, double tolerance, double residualNorm) const;
-  // After a converged step from `stepStart` (owned u) over `dt`: v = (u - stepStart) / dt,
+  // After a converged step from `stepStart` (owned u) over `dt`: commits the history models
+  // (one evaluation at the converged state, when some model keeps one), v = (u - stepStart) / dt,
   // a = 0; records the iterations and writes the step's outputs. Returns the velocity in
   // `rate` (owned, the next step's predictor). Collective.
   void finishStep(std::size_t step, double time, double dt, const std::vector<double>& stepStart,
@@ -46,6 +55,8 @@ class StaticProblem {
   std::vector<double> baseHeld_;  // owned: prescribed and planar z
   std::vector<double> residual_;  // owned, 3 per point
   long long rankDeficient_ = 0;   // points held because no intact bond is left
+  double stepDt_ = 0.0;           // the load step's duration (0 before the first)
+  const std::vector<double>* stepStart_ = nullptr;
 };
 
 // sqrt(sum v^2) over all ranks.

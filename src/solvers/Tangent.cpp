@@ -10,18 +10,31 @@ namespace peridot {
 
 using CrsGraph = Tpetra::CrsGraph<LocalOrdinal, GlobalOrdinal>;
 
+Tangent::~Tangent() = default;
+
 Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
-                 const std::string& solverPath)
+                 const std::string& solverPath, const ProbeSettings& probe)
     : topology_(topology), numRowPoints_(topology.numOwned + topology.numGhosts) {
+  bool probed = probe.always;
   for (const auto& b : blocks) {
     if (b.material->tangentReach() == TangentReach::None) {
       throw InputError(solverPath,
                        "material \"" + b.materialName + "\" of block " + b.name +
-                           " has no tangent stiffness, so the implicit solvers cannot use it; "
-                           "tangents exist for \"Elastic\", \"Elastic Bond Based\" and "
-                           "\"Normalized PMB\" (use Verlet for the others)");
+                           " has no tangent stiffness (it does not declare which points its "
+                           "force depends on), so the implicit solvers cannot use it; use Verlet");
     }
-    if (b.damage && b.damage->bondLaw().kind != BondLaw::Kind::Linear) {
+    if (!b.material->hasAnalyticTangent()) {
+      if (!probe.evaluator) {
+        throw InputError(solverPath, "material \"" + b.materialName + "\" of block " + b.name +
+                                         " has no analytic tangent, and this solver does not "
+                                         "probe one by finite differences");
+      }
+      probed = true;
+    }
+  }
+  for (const auto& b : blocks) {
+    // Probing differentiates whatever force law the evaluation applies.
+    if (!probed && b.damage && b.damage->bondLaw().kind != BondLaw::Kind::Linear) {
       throw InputError(solverPath, "block " + b.name +
                                        ": the tangent of the smooth bond law (DTT) is not "
                                        "available; the implicit solvers need the linear law");
@@ -87,10 +100,25 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
   overlap_->fillComplete(topology.ownedMap3, topology.ownedMap3);
   export_ = Teuchos::rcp(
       new Tpetra::Export<LocalOrdinal, GlobalOrdinal>(overlapMap3_, topology.ownedMap3));
+  if (probed) {
+    blocks_.values = std::vector<double>();  // not filled: the probes go to the owned rows
+    // The owned pattern (all zeros here), probed into at every assembly.
+    owned_ = Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(
+        Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology.ownedMap3,
+        topology.ownedMap3);
+    fd_ = std::make_unique<FiniteDifferenceTangent>(topology, owned_, probe);
+    overlap_ = Teuchos::null;  // only the owned rows are probed
+    export_ = Teuchos::null;
+    blocks_.columns = std::vector<int>();
+  }
 }
 
 void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks,
                        const double* held, double heldDiagonal, const double* addedDiagonal) {
+  if (fd_) {
+    fd_->fill(probeDt_, probeVelocityRate_, held, heldDiagonal, addedDiagonal);
+    return;
+  }
   std::fill(blocks_.values.begin(), blocks_.values.end(), 0.0);
   ModelState s = state;
   s.bondLaw = BondLaw();  // linear (checked at construction)
@@ -135,10 +163,11 @@ void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks
 
 double Tangent::bytes() const {
   const double pointEntries = static_cast<double>(blocks_.columns.size());
-  double matrixEntries = static_cast<double>(overlap_->getNodeNumEntries());
+  double matrixEntries =
+      overlap_.is_null() ? 0.0 : static_cast<double>(overlap_->getNodeNumEntries());
   if (!owned_.is_null()) matrixEntries += static_cast<double>(owned_->getNodeNumEntries());
   return pointEntries * (9 * sizeof(double) + sizeof(int)) +
-         matrixEntries * (sizeof(double) + sizeof(LocalOrdinal));
+         matrixEntries * (sizeof(double) + sizeof(LocalOrdinal)) + (fd_ ? fd_->bytes() : 0.0);
 }
 
 }  // namespace peridot

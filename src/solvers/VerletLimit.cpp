@@ -169,10 +169,10 @@ VerletLimitResult estimateVerletLimitAbout(const Topology& t, ModelEvaluator& ev
     MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, t.comm);
     const double eps = largest > 0 ? 1e-6 * smallestHorizon / largest : 0.0;
     for (int k = 0; k < n3; ++k) y[k] = base[k] + eps * v[k];
-    evaluator.evaluate(0.0, false);
+    evaluator.evaluate(0.0, false, false);  // a trial: no bond breaks, no history moves
     std::copy(f, f + n3, plus.begin());
     for (int k = 0; k < n3; ++k) y[k] = base[k] - eps * v[k];
-    evaluator.evaluate(0.0, false);
+    evaluator.evaluate(0.0, false, false);  // a trial: no bond breaks, no history moves
     for (int k = 0; k < n3; ++k) kv[k] = eps > 0 ? -(plus[k] - f[k]) / (2.0 * eps) : 0.0;
   };
   const VerletLimitResult r = estimateVerletLimit(t, density, volume, dimension, applyStiffness);

@@ -108,6 +108,20 @@ add_test(NAME ranks_QuasiStaticBar
     -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
 set_tests_properties(ranks_QuasiStaticBar PROPERTIES
   ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# QuasiStatic with Elastic Plastic (finite-difference tangent, trial evaluations, one commit per
+# load step) loaded past yield and unloaded: the same at 1, 2 and 3 ranks within
+# quasistatic_plastic.comp.
+add_test(NAME ranks_QuasiStaticPlasticBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/QuasiStaticPlasticBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/QuasiStaticPlasticBar
+    -DDECK=QuasiStaticPlasticBar.xml -DOUTPUT=QuasiStaticPlasticBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/quasistatic_plastic.comp
+    "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+set_tests_properties(ranks_QuasiStaticPlasticBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
 # Chained solvers (QuasiStatic then Implicit, Peridigm's XML form): the same at 1, 2 and 3 ranks
 # within implicitchain.comp, all records in one file.
 add_test(NAME ranks_ImplicitChainBar
