@@ -54,16 +54,9 @@ class NOXQuasiStatic::MatrixFreeStiffness : public TpetraOperator {
 
 NOXQuasiStatic::NOXQuasiStatic(const NOXQuasiStaticConfig& config, SolverContext context)
     : config_(config), c_(std::move(context)), problem_(c_, "NOXQuasiStatic") {
-  for (const auto& b : *c_.blocks) {
-    if (b.material->advancesHistory()) {
-      throw InputError(config_.path,
-                       "the material \"" + b.materialName + "\" of block " + b.name +
-                           " advances a history (plastic or viscous state) in every force "
-                           "evaluation, which NOX's trial evaluations would corrupt; "
-                           "NOXQuasiStatic does not support it yet (use QuasiStatic, Implicit or "
-                           "Verlet)");
-    }
-  }
+  // Materials with a history (plasticity, viscoelasticity) run: every residual NOX asks for is a
+  // trial evaluation from the history at the start of the load step, and StaticProblem commits
+  // the history once, at the converged state (finishStep).
   // The tangent is assembled when the Jacobian is the assembled one, or when a preconditioner
   // is built from it; matrix-free without a preconditioner needs none (any material).
   const bool needsTangent = !config_.matrixFree || config_.linear.preconditioner != "None";
