@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 
+#include "../common/TangentColumns.hpp"
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
@@ -167,54 +168,12 @@ TEST(FiniteDifferenceTangent, AgreesWithEveryAnalyticTangent) {
   }
 }
 
-// Largest |K_probed - K_column| over the columns of every third point, K_column the central
-// difference of the residual R = V (f + b) in one column (h = 1e-6 spacings), relative to the
-// largest |K| entry (collective). QuasiStatic evaluations are trials: no history moves.
+// Largest |K_probed - K_column| over the columns of every third point, relative to the largest
+// entry (test/common/TangentColumns.hpp); the tangent must be the probed one.
 double probedAgainstColumns(Simulation& sim, bool planar) {
-  QuasiStatic& qs = *sim.quasiStatic();
-  const Topology& t = sim.topology();
-  double* u = sim.fields().node("Displacement", 3);
-  qs.evaluate(0.0);
-  qs.assembleTangent();
-  EXPECT_TRUE(qs.tangent().finiteDifference());
-  const auto A = qs.tangent().matrix();
-  const auto colMap = A->getColMap();
-  const double h = 1e-6;
-  double worst = 0, largest = 0;
-  for (long long g = 0; g < t.globalNumPoints; g += 3) {
-    for (int d = 0; d < (planar ? 2 : 3); ++d) {
-      const GlobalOrdinal column = 3 * g + d;
-      const LocalOrdinal owned = t.ownedMap->getLocalElement(g);
-      const bool mine = owned != Teuchos::OrdinalTraits<LocalOrdinal>::invalid();
-      std::vector<double> plus, minus;
-      for (double sign : {1.0, -1.0}) {
-        const double saved = mine ? u[3 * owned + d] : 0.0;
-        if (mine) u[3 * owned + d] = saved + sign * h;
-        qs.evaluate(0.0);
-        (sign > 0 ? plus : minus) = qs.residual();
-        if (mine) u[3 * owned + d] = saved;
-      }
-      const LocalOrdinal c = colMap->getLocalElement(column);
-      for (int r = 0; r < 3 * t.numOwned; ++r) {
-        if (planar && r % 3 == 2) continue;
-        double probed = 0;
-        if (c != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) {
-          CrsMatrix::local_inds_host_view_type cols;
-          CrsMatrix::values_host_view_type vals;
-          A->getLocalRowView(r, cols, vals);
-          for (std::size_t k = 0; k < cols.extent(0); ++k)
-            if (cols(k) == c) probed = vals(k);
-        }
-        const double fd = -(plus[r] - minus[r]) / (2 * h);
-        worst = std::max(worst, std::fabs(probed - fd));
-        largest = std::max(largest, std::fabs(fd));
-      }
-    }
-  }
-  double global[2] = {worst, largest};
-  MPI_Allreduce(MPI_IN_PLACE, global, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  EXPECT_GT(global[1], 0.0);
-  return global[0] / global[1];
+  const double error = testing::tangentAgainstColumns(sim, planar);
+  EXPECT_TRUE(sim.quasiStatic()->tangent().finiteDifference());
+  return error;
 }
 
 TEST(FiniteDifferenceTangent, MaterialsWithoutAnalyticTangentMatchColumnDifferences) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "../common/StaticBar.hpp"
+#include "../common/TangentColumns.hpp"
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
@@ -60,52 +61,9 @@ std::unique_ptr<Simulation> makeSimulation(const std::string& yaml) {
   return std::make_unique<Simulation>(readRunConfig(*deck), MPI_COMM_WORLD, runLog);
 }
 
-// Largest |K_analytic - K_fd| over every column, relative to the largest |K| entry.
+// Largest |K_analytic - K_fd| over the columns, relative to the largest |K| entry.
 double tangentError(Simulation& sim, bool planar) {
-  QuasiStatic& qs = *sim.quasiStatic();
-  const Topology& t = sim.topology();
-  double* u = sim.fields().node("Displacement", 3);
-  qs.evaluate(0.0);
-  qs.assembleTangent();
-  const auto A = qs.tangent().matrix();
-  const auto colMap = A->getColMap();
-  const double h = 1e-6;  // point spacing 1: truncation ~h^2, rounding ~1e-16 |f| / h
-  double worst = 0, largest = 0;
-  // Every third point's columns (corner, edge, face and interior points among them): the
-  // differences cost two collective evaluations a column.
-  for (long long g = 0; g < t.globalNumPoints; g += 3) {
-    for (int d = 0; d < (planar ? 2 : 3); ++d) {
-      const GlobalOrdinal column = 3 * g + d;
-      const LocalOrdinal owned = t.ownedMap->getLocalElement(g);
-      std::vector<double> plus, minus;
-      for (double sign : {1.0, -1.0}) {
-        if (owned != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) u[3 * owned + d] += sign * h;
-        qs.evaluate(0.0);
-        (sign > 0 ? plus : minus) = qs.residual();
-        if (owned != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) u[3 * owned + d] -= sign * h;
-      }
-      const LocalOrdinal c = colMap->getLocalElement(column);
-      for (int r = 0; r < 3 * t.numOwned; ++r) {
-        if (planar && r % 3 == 2) continue;
-        double analytic = 0;
-        if (c != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) {
-          CrsMatrix::local_inds_host_view_type cols;
-          CrsMatrix::values_host_view_type vals;
-          A->getLocalRowView(r, cols, vals);
-          for (std::size_t k = 0; k < cols.extent(0); ++k)
-            if (cols(k) == c) analytic = vals(k);
-        }
-        // R = V f, K = -dR/du.
-        const double fd = -(plus[r] - minus[r]) / (2 * h);
-        worst = std::max(worst, std::fabs(analytic - fd));
-        largest = std::max(largest, std::fabs(analytic));
-      }
-    }
-  }
-  double global[2] = {worst, largest};
-  MPI_Allreduce(MPI_IN_PLACE, global, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  EXPECT_GT(global[1], 0.0);
-  return global[0] / global[1];
+  return testing::tangentAgainstColumns(sim, planar);
 }
 
 TEST(QuasiStaticTangent, MatchesFiniteDifferences) {
