@@ -249,8 +249,6 @@ void NOXQuasiStatic::run() {
   const auto& map = t.ownedMap3;
   std::vector<double> stepStart(n3, 0.0);
   double time = times[0];
-  if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
-  problem_.evaluateResidual();
   std::vector<double> rate = problem_.start(time);
   if (c_.rank == 0) {
     log << "NOXQuasiStatic: " << times.size() - 1 << " load steps, direction " << config_.direction

@@ -80,8 +80,6 @@ void QuasiStatic::run() {
   const auto& times = config_.times;
   std::vector<double> stepStart(n3, 0.0);
   double time = times[0];
-  if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
-  problem_.evaluateResidual();
   std::vector<double> predictor = problem_.start(time);
   if (c_.rank == 0) {
     log << "QuasiStatic: " << times.size() - 1 << " load steps, " << config_.linearSolver

@@ -106,6 +106,8 @@ double StaticProblem::criterion(bool absolute, double tolerance, double residual
 
 std::vector<double> StaticProblem::start(double time) {
   const int n3 = 3 * c_.topology->numOwned;
+  if (c_.b) c_.conditions->applyBodyForce(time, c_.b, c_.topology->numOwned);
+  evaluateResidual();
   std::vector<double> rate(n3, 0.0);
   for (int k = 0; k < n3; ++k) c_.a[k] = 0.0;
   if (c_.stepOffset == 0) {

@@ -43,8 +43,9 @@ class StaticProblem {
   // `rate` (owned, the next step's predictor). Collective.
   void finishStep(std::size_t step, double time, double dt, const std::vector<double>& stepStart,
                   int iterations, std::vector<double>& rate);
-  // Writes the initial record (a solver that starts a chain) and returns the initial predictor
-  // rate: the previous solver's velocity when the deck asks for it, else zero. Collective.
+  // Applies the body force at `time`, evaluates the initial state, writes the initial record (a
+  // solver that starts a chain) and returns the initial predictor rate: the previous solver's
+  // velocity when the deck asks for it, else zero. Collective.
   std::vector<double> start(double time);
 
  private:
