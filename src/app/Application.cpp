@@ -163,6 +163,7 @@ int runApplication(int argc, char** argv) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   int status = 0;
+  bool everyRankStopped = false;  // a collective error: every rank left the run alike
   try {
     status = runDeck(deckFile, checkOnly, rank);
   } catch (const InputError& e) {
@@ -175,6 +176,7 @@ int runApplication(int argc, char** argv) {
     // I/O failure) by this rank, before the abort below releases the others.
     if (rank == 0 || !e.collective())
       std::cerr << "peridot: error: " << shortenForMessage(e.what()) << std::endl;
+    everyRankStopped = e.collective();
     status = 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "peridot: error: out of memory on rank " << rank
@@ -189,8 +191,11 @@ int runApplication(int argc, char** argv) {
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   // Other ranks may be waiting in a collective call: only an abort releases them. Input errors
-  // are printed by rank 0; the others wait a moment so their abort does not cut it short.
-  if (status != 0 && status != kStoppedWithoutRestart && size > 1) {
+  // are printed by rank 0; the others wait a moment so their abort does not cut it short. A
+  // collective run error (a divergence, a bad expression value) stopped every rank at the same
+  // point: they finish normally with the error status, and no abort can cut rank 0's message
+  // or the output files short (under load it did: mpirun lost the message of a diverged run).
+  if (status != 0 && status != kStoppedWithoutRestart && size > 1 && !everyRankStopped) {
     if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
     MPI_Abort(MPI_COMM_WORLD, status);
   }
