@@ -6,7 +6,7 @@
 # radius, draws the figure and checks that the sphere went through (punch), that the hole is
 # open (hole) and that nothing cracked beyond three sphere radii (far: the paper's result, which
 # this model does not reproduce with the paper's parameters; README.md).
-#   bash run.sh                                  # the runs of doc/verification.md (~8 min CPU)
+#   bash run.sh                                  # two runs of doc/verification.md (~2 min CPU each)
 #   RUNS="2:2.015:0.04:1:punch,hole" DT=4e-7 bash run.sh   # the ctest example_v10_coarse
 #   PERIDOT=/path/to/peridot WORK=/some/dir NP=2 bash run.sh
 set -euo pipefail
