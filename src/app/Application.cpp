@@ -194,7 +194,7 @@ int runApplication(int argc, char** argv) {
   // are printed by rank 0; the others wait a moment so their abort does not cut it short. A
   // collective run error (a divergence, a bad expression value) stopped every rank at the same
   // point: they finish normally with the error status, and no abort can cut rank 0's message
-  // or the output files short (under load it did: mpirun lost the message of a diverged run).
+  // or the output files short (the likely cause of a diverged run's test failing under load).
   if (status != 0 && status != kStoppedWithoutRestart && size > 1 && !everyRankStopped) {
     if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
     MPI_Abort(MPI_COMM_WORLD, status);
