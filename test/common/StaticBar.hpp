@@ -9,11 +9,8 @@
 namespace peridot {
 namespace testing {
 
-inline std::string staticBarProblem(double strain,
-                                    const std::string& material =
-                                        "      Material Model: Elastic\n      Density: 7800.0\n"
-                                        "      Young's Modulus: 200.0e9\n"
-                                        "      Poisson's Ratio: 0.25\n") {
+// The bar with its end layers prescribed to the Value expressions `value[0..2]` (x, y, z).
+inline std::string staticBarProblemWith(const std::string& material, const std::string value[3]) {
   std::ostringstream left, right;
   int gid = 0;
   for (int k = 0; k < 4; ++k)
@@ -36,14 +33,28 @@ inline std::string staticBarProblem(double strain,
        "  Boundary Conditions:\n    Left Node Set: \""
     << left.str() << "\"\n    Right Node Set: \"" << right.str() << "\"\n";
   const char* axes[3] = {"x", "y", "z"};
-  const double factor[3] = {strain, -0.25 * strain, -0.25 * strain};
   for (const char* set : {"Left", "Right"})
     for (int a = 0; a < 3; ++a)
       d << "    " << set << axes[a]
         << ":\n      Type: Prescribed Displacement\n      Node Set: " << set
-        << " Node Set\n      Coordinate: " << axes[a] << "\n      Value: \"" << factor[a] << "*t*"
-        << axes[a] << "\"\n";
+        << " Node Set\n      Coordinate: " << axes[a] << "\n      Value: \"" << value[a] << "\"\n";
   return d.str();
+}
+
+inline std::string staticBarProblem(double strain,
+                                    const std::string& material =
+                                        "      Material Model: Elastic\n      Density: 7800.0\n"
+                                        "      Young's Modulus: 200.0e9\n"
+                                        "      Poisson's Ratio: 0.25\n") {
+  const char* axes[3] = {"x", "y", "z"};
+  const double factor[3] = {strain, -0.25 * strain, -0.25 * strain};
+  std::string value[3];
+  for (int a = 0; a < 3; ++a) {
+    std::ostringstream v;
+    v << factor[a] << "*t*" << axes[a];
+    value[a] = v.str();
+  }
+  return staticBarProblemWith(material, value);
 }
 
 }  // namespace testing

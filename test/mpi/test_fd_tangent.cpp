@@ -14,6 +14,8 @@
 #include <map>
 #include <sstream>
 
+#include "../common/RoughBlock.hpp"
+#include "../common/StaticBar.hpp"
 #include "../common/TangentColumns.hpp"
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
@@ -23,41 +25,10 @@
 namespace peridot {
 namespace {
 
-std::string idList(int n) {
-  std::ostringstream s;
-  for (int i = 1; i <= n; ++i) s << i << (i < n ? " " : "");
-  return s.str();
-}
-
-// A 5^3 (or 5^2) block with a rough initial displacement; `material` holds the material's keys
-// (indented by 6), horizon 2.01 spacings.
+// The rough 5^3 (or 5^2) block with a one-step QuasiStatic solver (not run).
 std::string blockDeck(const std::string& material, bool planar) {
-  const int n = 5, count = planar ? n * n : n * n * n;
-  std::ostringstream d;
-  d << "Peridigm:\n  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n";
-  if (planar) {
-    d << "    Thickness: 0.5\n    TensorProduct2DMeshGenerator:\n"
-         "      X Origin: 0.0\n      Y Origin: 0.0\n      X Length: 5.0\n      Y Length: 5.0\n"
-         "      Number Points X: 5\n      Number Points Y: 5\n";
-  } else {
-    d << "    TensorProduct3DMeshGenerator:\n"
-         "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
-         "      X Length: 5.0\n      Y Length: 5.0\n      Z Length: 5.0\n"
-         "      Number Points X: 5\n      Number Points Y: 5\n      Number Points Z: 5\n";
-  }
-  d << "  Materials:\n    M:\n"
-    << material
-    << "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.01\n"
-       "  Boundary Conditions:\n    All Node Set: \""
-    << idList(count) << "\"\n";
-  const char* axes[3] = {"x", "y", "z"};
-  for (int a = 0; a < (planar ? 2 : 3); ++a) {
-    d << "    U" << axes[a] << ":\n      Type: Initial Displacement\n      Node Set: All Node Set\n"
-      << "      Coordinate: " << axes[a] << "\n      Value: \"0.05*sin(" << 1.3 + a
-      << "*x + 2.1*y*y + 0.7*z*x + " << a << ")\"\n";
-  }
-  d << "  Solver:\n    Final Time: 1.0\n    QuasiStatic:\n      Number of Load Steps: 1\n";
-  return d.str();
+  return testing::roughBlockProblem(material, planar) +
+         "  Solver:\n    Final Time: 1.0\n    QuasiStatic:\n      Number of Load Steps: 1\n";
 }
 
 std::string keys(const std::string& model, const std::string& more = "") {
@@ -211,39 +182,13 @@ TEST(FiniteDifferenceTangent, MaterialsWithoutAnalyticTangentMatchColumnDifferen
   }
 }
 
-// The bar of test/mpi/test_quasistatic.cpp: 20 x 4 x 4 points, end layers (one horizon thick)
-// following u = eps(t) (x, -nu y, -nu z).
+// The bar of test/common/StaticBar.hpp with its ends following u = eps(t) (x, -nu y, -nu z).
 std::string barDeck(const std::string& material, const std::string& strain,
                     const std::string& steps) {
-  std::ostringstream left, right;
-  int gid = 0;
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 20; ++i) {
-        ++gid;
-        const double x = (i + 0.5) * 0.5;
-        if (x < 1.51) left << gid << " ";
-        if (x > 10 - 1.51) right << gid << " ";
-      }
+  const std::string value[3] = {"(" + strain + ")*x", "-0.25*(" + strain + ")*y",
+                                "-0.25*(" + strain + ")*z"};
   std::ostringstream d;
-  d << "Peridigm:\n  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
-       "    TensorProduct3DMeshGenerator:\n"
-       "      X Origin: 0.0\n      Y Origin: -1.0\n      Z Origin: -1.0\n"
-       "      X Length: 10.0\n      Y Length: 2.0\n      Z Length: 2.0\n"
-       "      Number Points X: 20\n      Number Points Y: 4\n      Number Points Z: 4\n"
-       "  Materials:\n    M:\n"
-    << material
-    << "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 1.51\n"
-       "  Boundary Conditions:\n    Left Node Set: \""
-    << left.str() << "\"\n    Right Node Set: \"" << right.str() << "\"\n";
-  const char* axes[3] = {"x", "y", "z"};
-  const char* factor[3] = {"", "-0.25*", "-0.25*"};
-  for (const char* set : {"Left", "Right"})
-    for (int a = 0; a < 3; ++a)
-      d << "    " << set << axes[a]
-        << ":\n      Type: Prescribed Displacement\n      Node Set: " << set
-        << " Node Set\n      Coordinate: " << axes[a] << "\n      Value: \"" << factor[a] << "("
-        << strain << ")*" << axes[a] << "\"\n";
+  d << testing::staticBarProblemWith(material, value);
   d << "  Solver:\n    Final Time: 1.0\n    QuasiStatic:\n      Time Steps: \"" << steps
     << "\"\n      Relative Tolerance: 1.0e-8\n      Belos Relative Tolerance: 1.0e-12\n"
        "      Belos Linear Solver: BlockGMRES\n      Maximum Solver Iterations: 20\n";

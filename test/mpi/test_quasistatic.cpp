@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "../common/RoughBlock.hpp"
 #include "../common/StaticBar.hpp"
 #include "../common/TangentColumns.hpp"
 #include "app/Simulation.hpp"
@@ -17,42 +18,15 @@
 namespace peridot {
 namespace {
 
-std::string idList(int n) {
-  std::ostringstream s;
-  for (int i = 1; i <= n; ++i) s << i << (i < n ? " " : "");
-  return s.str();
-}
-
 // A block of points with a rough initial displacement and a QuasiStatic solver (not run).
 std::string tangentDeck(const std::string& material, const std::string& plane, bool planar) {
-  const int n = 5, count = planar ? n * n : n * n * n;
-  std::ostringstream d;
-  d << "Peridigm:\n  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n";
-  if (planar) {
-    d << "    Thickness: 0.5\n    TensorProduct2DMeshGenerator:\n"
-         "      X Origin: 0.0\n      Y Origin: 0.0\n      X Length: 5.0\n      Y Length: 5.0\n"
-         "      Number Points X: 5\n      Number Points Y: 5\n";
-  } else {
-    d << "    TensorProduct3DMeshGenerator:\n"
-         "      X Origin: 0.0\n      Y Origin: 0.0\n      Z Origin: 0.0\n"
-         "      X Length: 5.0\n      Y Length: 5.0\n      Z Length: 5.0\n"
-         "      Number Points X: 5\n      Number Points Y: 5\n      Number Points Z: 5\n";
-  }
-  d << "  Materials:\n    M:\n      Material Model: \"" << material
+  std::ostringstream m;
+  m << "      Material Model: \"" << material
     << "\"\n      Density: 2.0\n      Bulk Modulus: 5.0\n";
-  if (material == "Elastic" || material == "Pals") d << "      Shear Modulus: 3.0\n";
-  if (!plane.empty()) d << "      " << plane << ": true\n";
-  d << "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 2.01\n"
-       "  Boundary Conditions:\n    All Node Set: \""
-    << idList(count) << "\"\n";
-  const char* axes[3] = {"x", "y", "z"};
-  for (int a = 0; a < (planar ? 2 : 3); ++a) {
-    d << "    U" << axes[a] << ":\n      Type: Initial Displacement\n      Node Set: All Node Set\n"
-      << "      Coordinate: " << axes[a] << "\n      Value: \"0.05*sin(" << 1.3 + a
-      << "*x + 2.1*y*y + 0.7*z*x + " << a << ")\"\n";
-  }
-  d << "  Solver:\n    Final Time: 1.0\n    QuasiStatic:\n      Number of Load Steps: 1\n";
-  return d.str();
+  if (material == "Elastic" || material == "Pals") m << "      Shear Modulus: 3.0\n";
+  if (!plane.empty()) m << "      " << plane << ": true\n";
+  return testing::roughBlockProblem(m.str(), planar) +
+         "  Solver:\n    Final Time: 1.0\n    QuasiStatic:\n      Number of Load Steps: 1\n";
 }
 
 std::unique_ptr<Simulation> makeSimulation(const std::string& yaml) {
