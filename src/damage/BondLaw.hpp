@@ -20,6 +20,13 @@ struct BondLaw {
     if (s > s1Minus && s < s0Minus) return s0Minus * (s - s1Minus) / (s0Minus - s1Minus);
     return 0.0;
   }
+  // 1 - mu(s) of paper 002 eq. 6 for a Smooth law: 0 below S0+, linear on [S0+, S1+], 1 beyond.
+  // DTT's bond damage is the history maximum of it (the damage pass or a fused force loop).
+  double brokenFraction(double s) const {
+    // A product with the reciprocal (hoisted out of a bond loop), not a division per bond.
+    const double r = (s - s0Plus) * (1.0 / (s1Plus - s0Plus));
+    return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
+  }
   // p(s) = integral of F from 0 to s.
   double potential(double s) const {
     if (kind == Kind::Linear) return 0.5 * s * s;

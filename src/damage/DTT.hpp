@@ -12,10 +12,14 @@
 
 namespace peridot {
 
-// 1 - mu(s) of paper 002 eq. 6: 0 below S0+, linear on [S0+, S1+], 1 beyond.
+// 1 - mu(s) of paper 002 eq. 6: 0 below S0+, linear on [S0+, S1+], 1 beyond (BondLaw's
+// brokenFraction, which a fused force loop applies).
 inline double dttBrokenFraction(double s, double s0Plus, double s1Plus) {
-  const double r = (s - s0Plus) / (s1Plus - s0Plus);
-  return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
+  BondLaw law;
+  law.kind = BondLaw::Kind::Smooth;
+  law.s0Plus = s0Plus;
+  law.s1Plus = s1Plus;
+  return law.brokenFraction(s);
 }
 
 class DTT : public DamageModel {
@@ -24,6 +28,7 @@ class DTT : public DamageModel {
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
   bool bindsToBlock() const override { return criticalStretch_.fromFractureEnergy(); }
+  bool fusesIntoSmoothBondLaw() const override { return true; }
   void bind(const MaterialModel& material, double horizon, const std::string& blockName,
             std::ostream& log) override;
   BondLaw bondLaw() const override;

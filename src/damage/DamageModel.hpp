@@ -31,6 +31,10 @@ class DamageModel {
   // exceeds it": a material that fuses that check into its force loop may then replace
   // computeDamage (MaterialModel::fusesCriticalStretch).
   virtual double fusableCriticalStretch() const { return 0.0; }
+  // Whether the model is nothing but "bond damage = the history maximum of its Smooth bond law's
+  // brokenFraction(stretch)" (DTT): a material that applies the smooth law in its force loop
+  // may then replace computeDamage (MaterialModel::fusesSmoothBreak).
+  virtual bool fusesIntoSmoothBondLaw() const { return false; }
   // Whether computeDamage reads ModelState::bondLength (stored only if some model asks for it;
   // a model that returns false computes |xi| with referenceBondLength()).
   virtual bool needsBondLength() const { return true; }

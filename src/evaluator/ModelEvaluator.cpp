@@ -56,7 +56,7 @@ void ModelEvaluator::initialize() {
   bool needLength = storeBondLengths_;
   for (const auto& b : blocks_)
     needLength = needLength || b.material->needsBondLength() ||
-                 (b.damage && b.damage->needsBondLength() && !fusesCriticalStretch(b));
+                 (b.damage && b.damage->needsBondLength() && !fusesDamage(b));
   if (needLength) {
     std::vector<double>& length = fields_.bond("Reference_Bond_Length");
     for (int i = 0; i < topology_.numOwned; ++i)
@@ -250,18 +250,20 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
   if (hasDamage_ && updateDamage) {
     Timers::Scope t(timers_, "Damage");
     for (auto& b : blocks_)
-      if (b.damage && !fusesCriticalStretch(b))
-        b.damage->computeDamage(state_, b.points, bondDamage_);
+      if (b.damage && !fusesDamage(b)) b.damage->computeDamage(state_, b.points, bondDamage_);
   }
   // A fused critical stretch is handed to the block's first bond loop: precompute for a model
-  // that breaks there (its dilatation must see this step's breaks), else computeForce. Each
-  // point's loops read only its own bonds' damage, so the same bonds break as in the pass above.
+  // that breaks there (its dilatation must see this step's breaks), else computeForce; a fused
+  // smooth law's damage (DTT) to computeForce, with fusedCriticalStretch 0. Each point's loops
+  // read only its own bonds' damage, so the same bonds break as in the pass above.
   const auto breakable = [&](const Block& b, bool inPrecompute) {
-    const bool fused =
-        updateDamage && fusesCriticalStretch(b) && b.material->breaksInPrecompute() == inPrecompute;
+    const bool inLoop =
+        fusesCriticalStretch(b) ? b.material->breaksInPrecompute() == inPrecompute : !inPrecompute;
+    const bool fused = updateDamage && fusesDamage(b) && inLoop;
     state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
     state_.breakableBondBroken = fused ? bondBroken_ : nullptr;
-    state_.fusedCriticalStretch = fused ? b.damage->fusableCriticalStretch() : 0.0;
+    state_.fusedCriticalStretch =
+        fused && fusesCriticalStretch(b) ? b.damage->fusableCriticalStretch() : 0.0;
   };
   bool precompute = !syncAfterPrecompute_.empty();
   for (const auto& b : blocks_) precompute = precompute || b.material->breaksInPrecompute();
@@ -295,6 +297,17 @@ bool ModelEvaluator::fusesCriticalStretch(const Block& b) const {
   // Compact damage has no float array for a separate pass: always fused.
   return (fuseCriticalStretch_ || compactDamage_ || b.material->requiresFusedCriticalStretch()) &&
          b.damage && b.damage->fusableCriticalStretch() > 0 && b.material->fusesCriticalStretch();
+}
+
+bool ModelEvaluator::fusesSmoothBreak(const Block& b) const {
+  // Float bond damage only: a smooth law's damage is not a 0/1 flag (compact damage never
+  // comes with it).
+  return fuseCriticalStretch_ && b.damage && b.damage->fusesIntoSmoothBondLaw() &&
+         b.damage->bondLaw().kind == BondLaw::Kind::Smooth && b.material->fusesSmoothBreak();
+}
+
+bool ModelEvaluator::fusesDamage(const Block& b) const {
+  return fusesCriticalStretch(b) || fusesSmoothBreak(b);
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {

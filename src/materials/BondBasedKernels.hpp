@@ -8,9 +8,10 @@
 // horizon holds the bond), s the bond stretch, times (1 - bond damage) with kDamage, omega the
 // bond influence with kInfluence (else 1), and the block's bond law: F(s) = s, p(s) = s^2/2
 // (Linear) or DTT's smooth F and p (kSmooth). With kBreak the loop also applies the block's
-// critical stretch (the "Critical Stretch" damage model, fused: one pass over the bonds instead of
-// two): a bond whose stretch exceeds it gets bond damage 1 before its force is taken, computed
-// exactly as the separate damage loop computes it, so the same bonds break. The inner loop is a
+// damage (fused: one pass over the bonds instead of two), computed exactly as the separate damage
+// loop computes it before the bond's force is taken, so the bonds break alike: with the linear law
+// the critical stretch ("Critical Stretch": a bond whose stretch exceeds it gets damage 1), with
+// the smooth law DTT's d <- max(d, brokenFraction(s)). The inner loop is a
 // SIMD loop: the per-point force sum runs in vector lanes (`omp simd reduction`), which fixes its
 // order by the bond list alone, so nodal results stay identical at any rank count.
 #include <cmath>
@@ -77,7 +78,13 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
       if constexpr (kThermal)
         th = kSides ? ci * (sides[b] & 1) * strainI + c[j] * ((sides[b] >> 1) & 1) * strain[j]
                     : ci * strainI + c[j] * strain[j];
-      if constexpr (kBreak) {
+      if constexpr (kBreak && kSmooth) {
+        static_assert(std::is_same_v<DamageT, float>, "a smooth law's damage is a float");
+        const float broken = static_cast<float>(law.brokenFraction((dY - zb) / zb));
+        const float d = breakable[b] < broken ? broken : breakable[b];  // std::max's choice
+        if (d != breakable[b]) breakable[b] = d;                        // a masked store, as below
+        c2 *= 1.0 - d;
+      } else if constexpr (kBreak) {
         const bool breaks = (dY - zb) / zb > criticalStretch;
         double d;
         if constexpr (std::is_same_v<DamageT, float>) {
@@ -144,6 +151,9 @@ void pairForceWithLaw(const ModelState& s, const std::vector<int>& points, const
   if (kDamage && breaks && s.bondLaw.kind == BondLaw::Kind::Linear)
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, false, true, false, kStoredLength,
                   DamageT>(s, points, c);
+  else if (kFloat && kDamage && breaks && s.bondLaw.kind == BondLaw::Kind::Smooth)
+    pairForceLoop<kDamage, kSides, kOverLength, kInfluence, true, true, false, kStoredLength,
+                  float>(s, points, c);
   else if (kFloat && s.bondLaw.kind == BondLaw::Kind::Smooth)  // flags come with Linear only
     pairForceLoop<kDamage, kSides, kOverLength, kInfluence, true, false, false, kStoredLength,
                   DamageT>(s, points, c);

@@ -38,6 +38,7 @@ class ElasticBondBased : public MaterialModel {
   }
   bool acceptsSmoothBondLaw() const override { return true; }
   bool fusesCriticalStretch() const override { return true; }
+  bool fusesSmoothBreak() const override { return true; }
   // The pair loops compute |xi| from the reference coordinates and read either damage form.
   bool needsBondLength() const override { return false; }
   bool acceptsBrokenBondFlags() const override { return true; }

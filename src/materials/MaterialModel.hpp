@@ -194,6 +194,9 @@ class MaterialModel {
   // the bonds less; the same bits as the separate damage loop): in computeForce, or in
   // precompute when breaksInPrecompute.
   virtual bool fusesCriticalStretch() const { return false; }
+  // Whether the model can also apply a Smooth law's damage (DamageModel::fusesIntoSmoothBondLaw)
+  // in its computeForce bond loop, the same bits as the separate pass (float bond damage).
+  virtual bool fusesSmoothBreak() const { return false; }
   // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
   // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
   // evaluator hands the model the breakable damage for that call only.

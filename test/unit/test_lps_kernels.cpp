@@ -1,7 +1,8 @@
 // The LPS ("Elastic") bond loops made faster for issue 16 (item 3), each checked bit for bit
 // against a second code path that computes the same thing the plain way: the critical stretch
 // folded into the dilatation loop against the separate damage pass, and the force loop against
-// a scalar loop written here with Peridigm's per-bond order of operations.
+// a scalar loop written here with Peridigm's per-bond order of operations. Also the bond-based
+// (PMB, normalized PMB) force loops with DTT's damage folded in, against DTT's own pass.
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
@@ -15,6 +16,7 @@
 
 #include "Materials.hpp"
 #include "damage/CriticalStretch.hpp"
+#include "damage/DTT.hpp"
 #include "evaluator/ModelEvaluator.hpp"
 #include "materials/Elastic.hpp"
 
@@ -29,10 +31,20 @@ std::shared_ptr<DamageModel> criticalStretch(double sc) {
   return std::make_shared<CriticalStretch>(r);
 }
 
+std::shared_ptr<DamageModel> dtt(double sc) {
+  Teuchos::ParameterList p;
+  p.set("Damage Model", std::string("DTT"));
+  p.set("Critical Stretch", sc);
+  ListReader r(p, "Damage Models -> D");
+  return std::make_shared<DTT>(r);
+}
+
 struct Options {
   std::string influence = "One";
   bool varyingHorizon = false;  // horizons 1.9..2.3: one-sided bonds (Topology::bondSides)
-  bool fuse = true;             // the evaluator's default: the critical stretch in the loop
+  bool fuse = true;             // the evaluator's default: the damage in the bond loop
+  std::string model = "Elastic";
+  bool smoothDamage = false;  // DTT instead of Critical Stretch
 };
 
 // A jittered n^3 lattice (spacing 1), one LPS block with a critical stretch.
@@ -74,8 +86,9 @@ struct Lattice {
     Block b;
     b.name = "block_1";
     b.id = 1;
-    b.material = peridot::testing::material("Elastic", "", 1.0e9, 0.3);
-    b.damage = criticalStretch(0.01);
+    b.material = o.model == "Elastic" ? peridot::testing::material("Elastic", "", 1.0e9, 0.3)
+                                      : peridot::testing::material(o.model, "", 1.0e9);
+    b.damage = o.smoothDamage ? dtt(0.01) : criticalStretch(0.01);
     for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
     blocks.push_back(b);
     evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, o.influence, timers);
@@ -108,10 +121,12 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 void PrintTo(const Options& o, std::ostream* os) {
-  *os << "influence " << o.influence << (o.varyingHorizon ? ", varying horizon" : "");
+  *os << o.model << (o.smoothDamage ? ", DTT" : "") << ", influence " << o.influence
+      << (o.varyingHorizon ? ", varying horizon" : "");
 }
 
 class LpsCriticalStretchFold : public ::testing::TestWithParam<Options> {};
+class DttFold : public ::testing::TestWithParam<Options> {};
 
 }  // namespace
 
@@ -153,3 +168,53 @@ INSTANTIATE_TEST_SUITE_P(Options, LpsCriticalStretchFold,
                          ::testing::Values(Options{"One", false, true},
                                            Options{"Parabolic Decay", false, true},
                                            Options{"1.0/zeta", true, true}));
+
+// DTT's damage applied in the bond-based force loops (the default) against DTT's own pass
+// before them: the same bond damage (partly broken bonds included), forces and node damage to
+// the bit, step after step, as bonds soften and break.
+TEST_P(DttFold, MatchesTheSeparateDamagePassBitForBit) {
+  Options fusedOptions = GetParam(), separateOptions = GetParam();
+  fusedOptions.fuse = true;
+  separateOptions.fuse = false;
+  Lattice fused(6, fusedOptions), separate(6, separateOptions);
+  EXPECT_EQ(GetParam().varyingHorizon, fused.evaluator->state().bondSides != nullptr);
+  const std::int64_t bonds = fused.topology.bondOffsets[fused.topology.numOwned];
+  long long partial = 0, broken = 0;
+  for (int step = 0; step <= 6; ++step) {
+    fused.deform(step);
+    separate.deform(step);
+    fused.evaluator->evaluate(1.0);
+    separate.evaluator->evaluate(1.0);
+    EXPECT_TRUE(sameBits(fused.node("Force_Density", 3), separate.node("Force_Density", 3)))
+        << "step " << step;
+    EXPECT_TRUE(sameBits(fused.nodeDamage(), separate.nodeDamage())) << "step " << step;
+    const float* a = fused.evaluator->state().bondDamage;
+    const float* b = separate.evaluator->state().bondDamage;
+    ASSERT_NE(a, nullptr);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(std::memcmp(a, b, sizeof(float) * bonds), 0) << "step " << step;
+    partial = broken = 0;
+    for (std::int64_t k = 0; k < bonds; ++k) {
+      if (a[k] > 0.0f && a[k] < 1.0f) ++partial;
+      if (a[k] == 1.0f) ++broken;
+    }
+  }
+  // Bonds did soften (the smooth part of the law) and break, and not all of them.
+  EXPECT_GT(partial, 0);
+  EXPECT_GT(broken, 0);
+  EXPECT_LT(partial + broken, bonds);
+  // An evaluation that must not break bonds (the implicit solvers' probes) changes no damage.
+  fused.deform(12);
+  const std::vector<float> before(fused.evaluator->state().bondDamage,
+                                  fused.evaluator->state().bondDamage + bonds);
+  fused.evaluator->evaluate(1.0, false);
+  EXPECT_EQ(std::memcmp(before.data(), fused.evaluator->state().bondDamage, sizeof(float) * bonds),
+            0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, DttFold,
+                         ::testing::Values(Options{"One", false, true, "Elastic Bond Based", true},
+                                           Options{"One", true, true, "Elastic Bond Based", true},
+                                           Options{"One", false, true, "Normalized PMB", true},
+                                           Options{"1.0/zeta", true, true, "Normalized PMB",
+                                                   true}));
