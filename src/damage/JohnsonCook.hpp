@@ -12,8 +12,9 @@
 //
 // History per point: D and the plastic strain it has been integrated to, committed once per
 // step (ModelState::commitHistory: a trial takes D to its state without storing it) and saved
-// in checkpoints. Needs a material that computes Equivalent_Plastic_Strain and Cauchy_Stress
-// (the plastic correspondence models); any other is refused when the block is set up.
+// in checkpoints, with the material's Cauchy_Stress that the first continued step reads. Needs a
+// material that computes Equivalent_Plastic_Strain and Cauchy_Stress (the plastic correspondence
+// models); any other is refused when the block is set up.
 #include <cmath>
 
 #include "damage/DamageModel.hpp"
@@ -30,8 +31,10 @@ class JohnsonCook : public DamageModel {
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
   bool needsBondLength() const override { return false; }
+  // With the material's Cauchy_Stress: the next step's triaxiality comes from it, and the
+  // material recomputes it only after the damage pass (a continued run would read zeros).
   std::vector<std::string> historyNodeFields() const override {
-    return {kCommittedDamageParameter, kIntegratedPlasticStrain};
+    return {kCommittedDamageParameter, kIntegratedPlasticStrain, "Cauchy_Stress"};
   }
 
   // eps_f at triaxiality sigma*.

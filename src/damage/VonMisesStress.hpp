@@ -20,6 +20,9 @@ class VonMisesStress : public DamageModel {
   void computeDamage(const ModelState& state, const std::vector<int>& points,
                      float* bondDamage) override;
   bool needsBondLength() const override { return false; }
+  // The material's Von_Mises_Stress: the first step of a continued run reads it before the
+  // material recomputes it.
+  std::vector<std::string> historyNodeFields() const override { return {"Von_Mises_Stress"}; }
 
   // sigma_vm / sigma_c of each point (ghosted), the value the ramp reads.
   static constexpr const char* kStressRatio = "Von_Mises_Stress_Ratio";

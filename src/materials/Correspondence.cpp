@@ -346,6 +346,7 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
       // Zero force state and outputs, then stop the run on every rank (below) — unless damage
       // broke every bond of the point: a point cut loose carries no stress and is no error.
       if (detached(s, i)) {
+        holdHistory(i);
         for (int k = 0; k < 9; ++k) {
           fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;
           cauchy_[9 * i + k] = 0.0;
@@ -389,6 +390,13 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
     vonMises_[i] = vonMises(cauchy_ + 9 * i);
   }
   throwIfAnyRank(message, s.topology->comm, true);
+}
+
+void CorrespondenceMaterial::holdHistory(int i) {
+  if (!rateForm()) return;
+  std::copy(unrotated_ + 9 * i, unrotated_ + 9 * i + 9, unrotatedNew_.begin() + 9 * i);
+  std::copy(rotation_ + 9 * i, rotation_ + 9 * i + 9, rotationNew_.begin() + 9 * i);
+  std::copy(leftStretch_ + 9 * i, leftStretch_ + 9 * i + 9, leftStretchNew_.begin() + 9 * i);
 }
 
 bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double* F,

@@ -131,6 +131,10 @@ class CorrespondenceMaterial : public MaterialModel {
   // step's new history in scratch space and commit it in commitHistory.
   virtual void secondPiolaKirchhoff(int i, const double* E, double* S) = 0;
   virtual void commitHistory(const std::vector<int>&) {}
+  // A point cut loose by damage (correspondence::detached) skips the constitutive update: its
+  // step-end history is the committed one. The base holds the rate form's sigma_u, R and V; a
+  // model with its own history holds it too (and calls this).
+  virtual void holdHistory(int i);
   // The rate form: the unrotated Cauchy stress of owned point i at the end of a step of size dt
   // from its value sigmaN at the start and the unrotated rate of deformation d (symmetric).
   // Called from precompute, like secondPiolaKirchhoff. Default: the linear hypoelastic law
