@@ -87,7 +87,9 @@ void runJohnsonCook(double neglect) {
     if (phi > 0 && phi < 1) ++ramped;
     if (phi == 1.0 && firstBroken < 0) {
       firstBroken = n;
-      if (neglect >= 1.0) EXPECT_GE(D, critical);
+      if (neglect >= 1.0) {
+        EXPECT_GE(D, critical);
+      }
     }
     if (firstBroken < 0) {
       // Still bonded: the material's own response is the closed form (the path is as meant).
@@ -150,8 +152,13 @@ TEST(VonMisesStressDamage, BondsBreakWhenTheStressPassesTheCriticalValue) {
     const float expected = vonMises((n - 1) * step) >= critical ? 1.0f : 0.0f;
     for (std::int64_t b = 0; b < pr.topology.numBonds(); ++b)
       ASSERT_EQ(bondDamage[b], expected) << "evaluation " << n;
-    if (n == 6) EXPECT_EQ(expected, 0.0f);  // the deck's stress crossed between 5 and 6
-    if (n == 7) EXPECT_EQ(expected, 1.0f);
+    // The stress crossed sigma_c between evaluations 5 and 6.
+    if (n == 6) {
+      EXPECT_EQ(expected, 0.0f);
+    }
+    if (n == 7) {
+      EXPECT_EQ(expected, 1.0f);
+    }
   }
 }
 
