@@ -76,10 +76,14 @@ void Simulation::writeCheckpoint(long long step) {
   // first continued step (when it is a search step) reads y of the checkpoint's step.
   std::vector<std::string> nodeFields = {"Displacement", "Velocity", "Acceleration", "Coordinates"};
   if (contact_) nodeFields.push_back(kContactSearchPositions);
-  for (const auto& b : blocks_)  // the models' per-point history (plastic multiplier, ...)
-    for (const auto& f : b.material->historyNodeFields())
+  for (const auto& b : blocks_) {  // the models' per-point history (plastic multiplier, ...)
+    std::vector<std::string> history = b.material->historyNodeFields();
+    if (b.damage)  // and the damage models' (the Johnson-Cook damage parameter)
+      for (const auto& f : b.damage->historyNodeFields()) history.push_back(f);
+    for (const auto& f : history)
       if (std::find(nodeFields.begin(), nodeFields.end(), f) == nodeFields.end())
         nodeFields.push_back(f);
+  }
   CheckpointClock clock;
   clock.step = step;
   clock.time = time_;

@@ -46,6 +46,9 @@ class DamageModel {
   // Whether the damage integrates a rate over time (ModelState::dt): it then needs a solver
   // with time steps; the load-stepped solvers evaluate with dt = 0 and refuse it.
   virtual bool integratesInTime() const { return false; }
+  // Node fields that carry the model's history from step to step (the Johnson-Cook damage
+  // parameter): the checkpoint saves and restores their owned values, as a material's.
+  virtual std::vector<std::string> historyNodeFields() const { return {}; }
 };
 
 using DamageRegistry = Registry<DamageModel>;

@@ -190,6 +190,13 @@ bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv,
   return true;
 }
 
+bool detached(const ModelState& s, int i) {
+  if (!s.bondDamage) return false;
+  for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b)
+    if (s.topology->ownSide(b) && s.bondDamage[b] < 1.0f) return false;
+  return true;
+}
+
 std::string describePoint(const ModelState& s, int i) {
   int intact = 0, total = 0;
   for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
@@ -336,7 +343,17 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
     double* F = deformationGradient_ + 9 * i;
     double M[9];  // the rate form's velocity sums, from the same pass
     if (!shapeTensorAndDeformationGradient(s, i, Kinv, F, true, rateForm() ? M : nullptr)) {
-      // Zero force state and outputs, then stop the run on every rank (below).
+      // Zero force state and outputs, then stop the run on every rank (below) — unless damage
+      // broke every bond of the point: a point cut loose carries no stress and is no error.
+      if (detached(s, i)) {
+        holdHistory(i);
+        for (int k = 0; k < 9; ++k) {
+          fRow_[k / 3][3 * i + k % 3] = aRow_[k / 3][3 * i + k % 3] = 0.0;
+          cauchy_[9 * i + k] = 0.0;
+        }
+        vonMises_[i] = 0.0;
+        continue;
+      }
       if (message.empty()) {
         char when[64];
         std::snprintf(when, sizeof when, " at time %.9g", s.time);
@@ -373,6 +390,13 @@ void CorrespondenceMaterial::precompute(const ModelState& s, const std::vector<i
     vonMises_[i] = vonMises(cauchy_ + 9 * i);
   }
   throwIfAnyRank(message, s.topology->comm, true);
+}
+
+void CorrespondenceMaterial::holdHistory(int i) {
+  if (!rateForm()) return;
+  std::copy(unrotated_ + 9 * i, unrotated_ + 9 * i + 9, unrotatedNew_.begin() + 9 * i);
+  std::copy(rotation_ + 9 * i, rotation_ + 9 * i + 9, rotationNew_.begin() + 9 * i);
+  std::copy(leftStretch_ + 9 * i, leftStretch_ + 9 * i + 9, leftStretchNew_.begin() + 9 * i);
 }
 
 bool CorrespondenceMaterial::rateStress(const ModelState& s, int i, const double* F,

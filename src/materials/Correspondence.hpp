@@ -30,7 +30,8 @@
 // A shape tensor is singular when the point has fewer than three non-coplanar intact bonds.
 // Peridigm stops the run there ("failed to compute shape tensor ... Is the horizon too
 // small?"); so does Peridot, collectively, naming the point, its position, and its bond count,
-// at set-up (InputError) or after bonds broke (RunError). Never a NaN.
+// at set-up (InputError) or after bonds broke (RunError). Never a NaN. A point whose bonds have
+// all broken is the exception: it is cut loose (zero stress and force state), not an error.
 #include <string>
 #include <vector>
 
@@ -63,6 +64,10 @@ double vonMises(const double* a);
 // `s.velocity` (the rate form's Fdot = M K^-1).
 bool shapeTensorAndDeformationGradient(const ModelState& s, int i, double* Kinv, double* F,
                                        bool useDamage = true, double* velocitySums = nullptr);
+
+// True when damage has broken every bond on the point's own side (a point cut loose by ductile
+// damage): its singular shape tensor is then no error, the point carries no stress.
+bool detached(const ModelState& s, int i);
 
 // "point <id> at (x, y, z) (N intact bonds of M)": the diagnostics' description of a point.
 std::string describePoint(const ModelState& s, int i);
@@ -126,6 +131,10 @@ class CorrespondenceMaterial : public MaterialModel {
   // step's new history in scratch space and commit it in commitHistory.
   virtual void secondPiolaKirchhoff(int i, const double* E, double* S) = 0;
   virtual void commitHistory(const std::vector<int>&) {}
+  // A point cut loose by damage (correspondence::detached) skips the constitutive update: its
+  // step-end history is the committed one. The base holds the rate form's sigma_u, R and V; a
+  // model with its own history holds it too (and calls this).
+  virtual void holdHistory(int i);
   // The rate form: the unrotated Cauchy stress of owned point i at the end of a step of size dt
   // from its value sigmaN at the start and the unrotated rate of deformation d (symmetric).
   // Called from precompute, like secondPiolaKirchhoff. Default: the linear hypoelastic law

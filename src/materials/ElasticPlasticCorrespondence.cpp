@@ -145,6 +145,14 @@ void ElasticPlasticCorrespondence::commitHistory(const std::vector<int>& points)
   }
 }
 
+void ElasticPlasticCorrespondence::holdHistory(int i) {
+  CorrespondenceMaterial::holdHistory(i);
+  eqpsNew_[i] = eqps_[i];
+  if (!rateForm())
+    std::copy(plasticStrain_ + 9 * i, plasticStrain_ + 9 * i + 9,
+              plasticStrainNew_.begin() + 9 * i);
+}
+
 double ElasticPlasticCorrespondence::energyDensity(int i, const double* E) const {
   double Ee[9];
   for (int k = 0; k < 9; ++k) Ee[k] = E[k] - plasticStrain_[9 * i + k];

@@ -45,6 +45,7 @@ class ElasticPlasticCorrespondence : public CorrespondenceMaterial {
   void unrotatedCauchyStress(int i, const double* d, double dt, const double* sigmaN,
                              double* sigma) override;
   void commitHistory(const std::vector<int>& points) override;
+  void holdHistory(int i) override;
   double energyDensity(int i, const double* E) const override;
   // The deviator of the stress S and its squared norm dev:dev (the trial state of the returns).
   static double deviator(const double* S, double* dev);

@@ -142,8 +142,8 @@ peridot_baddeck(unknown_damage_model DECK unknown_damage_model.yaml
   EXPECT [[Damage Models -> My Damage -> Damage Model: unknown damage model "Critical Strain"]])
 peridot_baddeck(unsupported_material_model DECK unsupported_material_model.yaml
   EXPECT [[Materials -> My Material -> Material Model: the Peridigm material model "Multiphysics Elastic" is not supported by Peridot yet]])
-peridot_baddeck(unsupported_damage_model DECK unsupported_damage_model.yaml
-  EXPECT [[Damage Models -> My Damage -> Damage Model: the Peridigm damage model "Johnson Cook" is not supported by Peridot yet]])
+peridot_baddeck(ductile_damage_on_elastic DECK ductile_damage_on_elastic.yaml
+  EXPECT [[Damage Models -> My Damage: the damage model "Johnson Cook" reads the material's Equivalent_Plastic_Strain, Cauchy_Stress, which the material of block "block_1" does not compute]])
 peridot_baddeck(ebb_two_constants DECK ebb_two_constants.yaml
   EXPECT [[Materials -> My Material -> Shear Modulus: a bond-based material has one elastic constant]])
 peridot_baddeck(elastic_one_constant DECK elastic_one_constant.yaml

@@ -76,6 +76,13 @@ peridot_identical(CorrespondenceCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/deck
                   CorrespondenceCube.xml CorrespondenceCube.e exact_correspondence.comp 2744)
 peridot_identical(CorrespondenceBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/CorrespondenceBar
                   CorrespondenceBar.xml CorrespondenceBar.e exact_correspondence.comp 0)
+# "Johnson Cook" damage on a plastic correspondence bar pulled until it breaks at its flaw
+# (damage history ghosted each step, points cut loose): bitwise equal at 1-4 ranks.
+peridot_identical(DuctileBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DuctileBar
+                  DuctileBar.xml DuctileBar.e exact_ductile.comp 864)
+# The same bar with "Von Mises Stress" damage (bonds about half damaged, none broken).
+peridot_identical(VonMisesBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DuctileBar
+                  VonMisesBar.xml VonMisesBar.e exact_ductile.comp 864)
 # Viscoplastic Needleman Correspondence with a flaw: bitwise equal at 1-4 ranks; every point is
 # also checked against a scalar return with its own yield stress (test/mpi/test_needleman_cube.cpp).
 peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanCube

@@ -49,3 +49,7 @@ peridot_restart_test(split_correspondence split Correspondence.yaml.in 16.0 8.0 
 # committed eps_p, both of which a restart must carry.
 peridot_restart_test(split_needleman split Needleman.yaml.in 16.0 8.0 10
                      "Equivalent_Plastic_Strain")
+# "Johnson Cook" damage: its per-point damage parameter and the plastic strain it was integrated
+# to are history the checkpoint must carry; bonds are partly damaged at the checkpoint and break
+# after it.
+peridot_restart_test(split_johnsoncook split JohnsonCook.yaml.in 16.0 8.0 10 "Damage")
