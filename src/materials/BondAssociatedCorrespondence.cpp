@@ -115,9 +115,11 @@ void BondAssociatedCorrespondence::initialize(const ModelState& s, const std::ve
   rotationNew_.resize(9 * n, 0.0);
   stretchNew_.resize(9 * n, 0.0);
   eqpsNew_.resize(n, 0.0);
-  bondSigmaNew_.resize(9 * bonds, 0.0);
-  bondRotationNew_.resize(9 * bonds, 0.0);
-  bondStretchNew_.resize(9 * bonds, 0.0);
+  for (int k = 0; k < 9; ++k) {
+    bondSigmaNew_[k].resize(bonds, 0.0);
+    bondRotationNew_[k].resize(bonds, 0.0);
+    bondStretchNew_[k].resize(bonds, 0.0);
+  }
   bondEqpsNew_.resize(bonds, 0.0);
   bondTraction_.resize(3 * bonds, 0.0);
   std::string message;
@@ -221,9 +223,7 @@ void BondAssociatedCorrespondence::bondStresses(const ModelState& s, int i, std:
     const double omega = s.influence ? s.influence[b] : 1.0;
     const double ownI = s.bondSides ? (s.bondSides[b] & 1) : 1.0;
     const double ownJ = s.bondSides ? ((s.bondSides[b] >> 1) & 1) : 1.0;
-    double* sigmaNew = bondSigmaNew_.data() + 9 * b;
-    double* Rnew = bondRotationNew_.data() + 9 * b;
-    double* Vnew = bondStretchNew_.data() + 9 * b;
+    double sigmaNew[9], Rnew[9], Vnew[9];
     double* traction = bondTraction_.data() + 3 * b;
     double sigmaN[9], Rn[9], Vn[9];
     for (int k = 0; k < 9; ++k) {
@@ -255,9 +255,11 @@ void BondAssociatedCorrespondence::bondStresses(const ModelState& s, int i, std:
     }
     if (!active) {
       // A broken bond (or a failed one, with the run about to stop) keeps its history.
-      std::copy(sigmaN, sigmaN + 9, sigmaNew);
-      std::copy(Rn, Rn + 9, Rnew);
-      std::copy(Vn, Vn + 9, Vnew);
+      for (int k = 0; k < 9; ++k) {
+        bondSigmaNew_[k][b] = sigmaN[k];
+        bondRotationNew_[k][b] = Rn[k];
+        bondStretchNew_[k][b] = Vn[k];
+      }
       bondEqpsNew_[b] = bondEqps_[b];
       traction[0] = traction[1] = traction[2] = 0.0;
       continue;
@@ -269,6 +271,11 @@ void BondAssociatedCorrespondence::bondStresses(const ModelState& s, int i, std:
     multiply(Fdotb, Finv, L);
     flanaganTaylorStep(L, Vn, Rn, s.dt, Vnew, Rnew, d);
     bondEqpsNew_[b] = updateStress(d, s.dt, sigmaN, bondEqps_[b], sigmaNew);
+    for (int k = 0; k < 9; ++k) {
+      bondSigmaNew_[k][b] = sigmaNew[k];
+      bondRotationNew_[k][b] = Rnew[k];
+      bondStretchNew_[k][b] = Vnew[k];
+    }
     // sigma_b = R sigma_u R^T, P_b = J sigma_b F_b^-T
     double tmp[9], sigma[9], P[9];
     multiply(Rnew, sigmaNew, tmp);
@@ -356,14 +363,16 @@ void BondAssociatedCorrespondence::computeForce(const ModelState& s,
     std::copy(rotationNew_.begin() + 9 * i, rotationNew_.begin() + 9 * i + 9, rotation_ + 9 * i);
     std::copy(stretchNew_.begin() + 9 * i, stretchNew_.begin() + 9 * i + 9, leftStretch_ + 9 * i);
     if (plastic_) eqps_[i] = eqpsNew_[i];
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      for (int k = 0; k < 9; ++k) {
-        bondSigma_[k][b] = bondSigmaNew_[9 * b + k];
-        bondRotation_[k][b] = bondRotationNew_[9 * b + k];
-        bondStretch_[k][b] = bondStretchNew_[9 * b + k];
-      }
-      bondEqps_[b] = bondEqpsNew_[b];
+    const std::int64_t first = offsets[i], last = offsets[i + 1];
+    for (int k = 0; k < 9; ++k) {
+      std::copy(bondSigmaNew_[k].begin() + first, bondSigmaNew_[k].begin() + last,
+                bondSigma_[k] + first);
+      std::copy(bondRotationNew_[k].begin() + first, bondRotationNew_[k].begin() + last,
+                bondRotation_[k] + first);
+      std::copy(bondStretchNew_[k].begin() + first, bondStretchNew_[k].begin() + last,
+                bondStretch_[k] + first);
     }
+    std::copy(bondEqpsNew_.begin() + first, bondEqpsNew_.begin() + last, bondEqps_ + first);
   }
 }
 

@@ -125,8 +125,9 @@ class BondAssociatedCorrespondence : public MaterialModel {
   double* bondEqps_ = nullptr;
   double* bondVonMises_ = nullptr;
   double* bondTriaxiality_ = nullptr;
-  // ... and this step's from the last precompute (9 per bond entry), committed by computeForce.
-  std::vector<double> bondSigmaNew_, bondRotationNew_, bondStretchNew_, bondEqpsNew_;
+  // ... and this step's from the last precompute, in the same layout (component k of bond entry
+  // b at [k][b]: the commit is a contiguous copy per point), committed by computeForce.
+  std::vector<double> bondSigmaNew_[9], bondRotationNew_[9], bondStretchNew_[9], bondEqpsNew_;
   // P_b xi / |xi|^2 of every bond entry, from precompute for the force.
   std::vector<double> bondTraction_;
   // The point history's step-end values, committed by computeForce.
