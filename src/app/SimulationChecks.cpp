@@ -113,12 +113,15 @@ void Simulation::checkVariables() {
     }
     if ((v == "Shape_Tensor_Inverse" || v == "Cauchy_Stress" || v == "Unrotated_Cauchy_Stress" ||
          v == "Von_Mises_Stress" || v == "Hourglass_Force_Density" ||
-         v == "Equivalent_Plastic_Strain" || v == "Rotation_Tensor" || v == "Left_Stretch_Tensor" ||
-         v == "Velocity_Gradient" || v == "Unrotated_Rate_Of_Deformation") &&
+         v == "Equivalent_Plastic_Strain" || v == "Stress_Triaxiality" || v == "Rotation_Tensor" ||
+         v == "Left_Stretch_Tensor" || v == "Velocity_Gradient" ||
+         v == "Unrotated_Rate_Of_Deformation") &&
         !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a correspondence material (e.g. \"Elastic " +
                                  "Correspondence\"" +
-                                 (v == "Equivalent_Plastic_Strain" ? ", a plastic one)" : ")"));
+                                 (v == "Equivalent_Plastic_Strain" ? ", a plastic one)"
+                                  : v == "Stress_Triaxiality" ? ", a plastic bond-associated one)"
+                                                              : ")"));
     }
     if (v == "Partial_Stress" && !modelFields.count(v)) {
       throw InputError(path,

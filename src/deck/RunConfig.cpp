@@ -317,6 +317,8 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "unrotated rate of deformation d = R^T sym(L) R (correspondence models, rate form)"},
       {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
       {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
+      {"Stress_Triaxiality", 1,
+       "mean over von Mises stress of the Cauchy stress (plastic bond-associated models)"},
       {"Contact_Force", 3, "Contact_Force_Density x volume"},
       {"Neighborhood_Volume", 1,
        "volume of the point's family: sum of its neighbours' volumes (times their cell "

@@ -83,6 +83,14 @@ peridot_identical(DuctileBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Ductil
 # The same bar with "Von Mises Stress" damage (bonds about half damaged, none broken).
 peridot_identical(VonMisesBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DuctileBar
                   VonMisesBar.xml VonMisesBar.e exact_ductile.comp 864)
+# Bond-associated correspondence decks (point F, Fdot, 1/m ghosted inside precompute, B = S K^-1
+# after it, a stress and plastic history per bond): bitwise equal at 1-4 ranks; the cube's
+# stresses and plastic strains are also checked against a scalar return mapping
+# (test/mpi/test_bond_associated_cube.cpp).
+peridot_identical(BondAssociatedCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/BondAssociatedCube
+                  BondAssociatedCube.xml BondAssociatedCube.e exact_bondassociated.comp 1000)
+peridot_identical(BondAssociatedBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/BondAssociatedBar
+                  BondAssociatedBar.xml BondAssociatedBar.e exact_bondassociated.comp 0)
 # Viscoplastic Needleman Correspondence with a flaw: bitwise equal at 1-4 ranks; every point is
 # also checked against a scalar return with its own yield stress (test/mpi/test_needleman_cube.cpp).
 peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanCube
