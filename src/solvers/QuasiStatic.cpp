@@ -199,7 +199,10 @@ void QuasiStatic::exhausted(long long step, const LoadSchedule& schedule, const 
            "structure may have failed. The outputs of the "
         << schedule.accepted() << " converged load step(s), to time "
         << formatNumber(schedule.start()) << ", are in the files.";
-    throw RunError(msg.str());
+    // Every rank decides alike (global norms): an orderly collective stop.
+    RunError error(msg.str());
+    error.markCollective();
+    throw error;
   }
   // Switch to Verlet: the state of the last converged step, moving at that step's rate (the
   // velocity Peridigm hands to its explicit solver).
@@ -255,10 +258,15 @@ void QuasiStatic::run() {
                "Iterations), a looser Relative Tolerance or Adaptive Load-Stepping; if bonds "
                "are breaking, the structure may have failed (Verlet follows it). The outputs of "
                "the steps before are in the files.";
-        throw RunError(msg.str());
+        // Every rank decides alike (global norms): an orderly collective stop.
+        RunError error(msg.str());
+        error.markCollective();
+        throw error;
       }
       restore(stepStart);
-      if (schedule.cut()) {
+      const bool cut = schedule.cut();
+      stats_.reductions = schedule.totalReductions();
+      if (cut) {
         if (c_.outputs && adaptive.adaptiveOutputFrequency) c_.outputs->multiplyFrequency(2);
         if (c_.rank == 0) {
           log << "  load step " << step << " failed (residual " << r.norm << ", criterion "
@@ -287,7 +295,6 @@ void QuasiStatic::run() {
     acceptedSteps_ = schedule.accepted();
     endTime_ = time;
   }
-  stats_.reductions = schedule.totalReductions();
   stats_.tangentBytes = tangent_->bytes();
   double tangentBytes = 0;
   MPI_Allreduce(&stats_.tangentBytes, &tangentBytes, 1, MPI_DOUBLE, MPI_SUM, c_.comm);
