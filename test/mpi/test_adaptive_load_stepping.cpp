@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
+#include "output/ExodusCompare.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
@@ -123,23 +125,25 @@ std::vector<double> convergedTimes(Simulation& sim) {
   return times;
 }
 
-TEST(QuasiStaticAdaptive, HalvingsArePredictedByFixedStepRunsAndTheStateIsTheirs) {
+TEST(AdaptiveLoadStepping, HalvingsArePredictedByFixedStepRunsAndTheStateIsTheirs) {
   // 20% strain in one load step with 3 Newton iterations does not converge. The rule halves the
   // first step until it converges: k halvings where 2^k fixed steps is the first plain run whose
   // first step converges. With Reduce all remaining load steps every later step has that length,
   // so the adaptive run must be the 2^k-step run, to the bit (the same operations).
   const std::string problem = barProblem(0.2, 0.0);
   int k = -1;
+  std::unique_ptr<Simulation> fixed;
   for (int j = 0; j <= 5 && k < 0; ++j) {
     auto plain = makeSimulation(
         problem + quasiStatic("Number of Load Steps: " + std::to_string(1 << j), 3, ""));
     const std::string message = runError([&] { plain->run(); });
-    if (message.find("load step 1 ") == std::string::npos) k = j;
+    if (message.find("load step 1 ") == std::string::npos) {
+      k = j;
+      ASSERT_EQ(message, "") << "the 2^k-step run must complete";
+      fixed = std::move(plain);
+    }
   }
   ASSERT_GE(k, 1) << "the plain one-step run must fail for the test to mean anything";
-  auto fixed = makeSimulation(
-      problem + quasiStatic("Number of Load Steps: " + std::to_string(1 << k), 3, ""));
-  ASSERT_EQ(runError([&] { fixed->run(); }), "");
   auto adaptive = makeSimulation(
       problem + quasiStatic("Number of Load Steps: 1", 3, adaptiveList(5, 10, true)));
   ASSERT_EQ(runError([&] { adaptive->run(); }), "");
@@ -166,11 +170,42 @@ TEST(QuasiStaticAdaptive, HalvingsArePredictedByFixedStepRunsAndTheStateIsTheirs
   EXPECT_LT(difference, 1e-6 * largest);
 }
 
+TEST(AdaptiveLoadStepping, AdaptiveOutputFrequencyDoublesPerHalving) {
+  // The 20% strain bar in one step, cut k times (statistics), then 2^k steps of 1/2^k: with
+  // Output Frequency 1 doubled per halving (2^k), records are due at the step numbers that are
+  // multiples of 2^k: step 0 and the last (without the doubling, all 2^k + 1 records).
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // One name on every rank (rank 0 writes the file).
+  const std::string stem = "adaptive_output_frequency_test";
+  const std::string output = "  Output:\n    Output Filename: " + stem +
+                             "\n    Output Frequency: 1\n    Output Variables:\n"
+                             "      Displacement: true\n";
+  auto sim = makeSimulation(
+      barProblem(0.2, 0.0) +
+      quasiStatic("Number of Load Steps: 1", 3,
+                  adaptiveList(5, 10, true, "        Adaptive output frequency: true\n")) +
+      output);
+  ASSERT_EQ(runError([&] { sim->run(); }), "");
+  const int k = sim->quasiStatic()->statistics().reductions;
+  ASSERT_GE(k, 2);
+  EXPECT_EQ(sim->quasiStatic()->acceptedSteps(), 1LL << k);
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (rank == 0) {
+    const auto results = readExodusResults(stem + ".e");
+    ASSERT_EQ(results.times.size(), 2u);
+    EXPECT_EQ(results.times[0], 0.0);
+    EXPECT_EQ(results.times[1], 1.0);
+    std::remove((stem + ".e").c_str());
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
 // The bar with a critical stretch of 0.6% pulled to 1% strain: bonds break from t ~ 0.4 on
 // and Newton stalls there (observed: steps of 1/16 fail from t = 0.375).
 const double kRate = 0.01, kStretch = 0.006;
 
-TEST(QuasiStaticAdaptive, ACutStepWithBreakingBondsRestartsFromTheCommittedState) {
+TEST(AdaptiveLoadStepping, ACutStepWithBreakingBondsRestartsFromTheCommittedState) {
   const std::string problem = barProblem(kRate, kStretch);
   std::vector<double> sixteenths;
   for (int j = 0; j <= 7; ++j) sixteenths.push_back(j / 16.0);
@@ -195,7 +230,7 @@ TEST(QuasiStaticAdaptive, ACutStepWithBreakingBondsRestartsFromTheCommittedState
   EXPECT_EQ(gathered(*adaptive, "Displacement", 3), gathered(*fixed, "Displacement", 3));
 }
 
-TEST(QuasiStaticAdaptive, ExhaustedReductionsStopWithTheDocumentedError) {
+TEST(AdaptiveLoadStepping, ExhaustedReductionsStopWithTheDocumentedError) {
   std::vector<double> sixteenths;
   for (int j = 0; j <= 8; ++j) sixteenths.push_back(j / 16.0);
   auto sim = makeSimulation(barProblem(kRate, kStretch) +
@@ -212,7 +247,7 @@ TEST(QuasiStaticAdaptive, ExhaustedReductionsStopWithTheDocumentedError) {
   EXPECT_LT(sim->quasiStatic()->endTime(), 0.5);
 }
 
-TEST(QuasiStaticAdaptive, SwitchToVerletContinuesAsAChainedVerletRun) {
+TEST(AdaptiveLoadStepping, SwitchToVerletContinuesAsAChainedVerletRun) {
   // Time scaled by 1e-3 so that the explicit part is short: the quasi-static steps are the same
   // (rate independent). No reduction allowed: the first failed step switches.
   const double scale = 1e-3, dt = 1e-6;
