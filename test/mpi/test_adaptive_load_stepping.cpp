@@ -230,6 +230,34 @@ TEST(AdaptiveLoadStepping, ACutStepWithBreakingBondsRestartsFromTheCommittedStat
   EXPECT_EQ(gathered(*adaptive, "Displacement", 3), gathered(*fixed, "Displacement", 3));
 }
 
+TEST(AdaptiveLoadStepping, ACutStepOfAPlasticBarLeavesNoPlasticHistory) {
+  // Elastic Plastic (yield strain 1e-3) pulled to 0.225% strain in three steps of 4 Newton
+  // iterations: the first step fails and is halved. A failed attempt's evaluations are trials
+  // (no history written), so Lambda and the displacements must be those of a run that took the
+  // converged steps from the start.
+  std::ostringstream v;
+  v << 0.003 << "*t*x";
+  const std::string value[3] = {v.str(), "0.0", "0.0"};
+  const std::string problem = testing::staticBarProblemWith(
+      "      Material Model: Elastic Plastic\n      Density: 7800.0\n"
+      "      Young's Modulus: 200.0e9\n      Poisson's Ratio: 0.25\n"
+      "      Yield Stress: 200.0e6\n",
+      value);
+  const std::vector<double> quarters{0, 0.25, 0.5, 0.75};
+  auto adaptive =
+      makeSimulation(problem + quasiStatic(timeSteps(quarters), 4, adaptiveList(3, 6, false)));
+  ASSERT_EQ(runError([&] { adaptive->run(); }), "");
+  ASSERT_GT(adaptive->quasiStatic()->statistics().reductions, 0) << "the test needs a cut step";
+  auto fixed = makeSimulation(problem + quasiStatic(timeSteps(convergedTimes(*adaptive)), 4, ""));
+  ASSERT_EQ(runError([&] { fixed->run(); }), "");
+  const auto lambda = gathered(*adaptive, "Lambda", 1);
+  double total = 0;
+  for (double l : lambda) total += l;
+  EXPECT_GT(total, 0.0) << "the bar must have yielded";
+  EXPECT_EQ(lambda, gathered(*fixed, "Lambda", 1));
+  EXPECT_EQ(gathered(*adaptive, "Displacement", 3), gathered(*fixed, "Displacement", 3));
+}
+
 TEST(AdaptiveLoadStepping, ExhaustedReductionsStopWithTheDocumentedError) {
   std::vector<double> sixteenths;
   for (int j = 0; j <= 8; ++j) sixteenths.push_back(j / 16.0);
