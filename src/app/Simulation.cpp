@@ -414,7 +414,8 @@ void Simulation::prepareSolver() {
   }
   numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
   if (!s.explicitVerlet()) checkImplicit();
-  if (numSteps_ < 1 && !s.loadStepped()) {
+  // (A switch from QuasiStatic close to the final time may leave less than one step: none.)
+  if (numSteps_ < 1 && !s.loadStepped() && !switching_) {
     throw InputError(s.path + " -> Final Time",
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }

@@ -70,6 +70,8 @@ class Simulation {
   double stableTimeStepEstimate() const { return stableDt_; }
   // The QuasiStatic solver of the last run() (null for Verlet), for its statistics.
   QuasiStatic* quasiStatic() { return quasiStatic_.get(); }
+  // Whether a QuasiStatic solver's Adaptive Load-Stepping switched to Verlet.
+  bool switchedToVerlet() const { return switchedToVerlet_; }
   // For tests: the model evaluator and the blocks.
   ModelEvaluator& evaluator() { return *evaluator_; }
   std::vector<Block>& blocks() { return blocks_; }
@@ -107,6 +109,11 @@ class Simulation {
   // Implicit run.
   void checkImplicit();
   void runImplicit();
+  // QuasiStatic's Adaptive Load-Stepping exhausted with Switch to Verlet: the explicit solver
+  // continues from the last converged load step.
+  void switchToVerlet();
+  bool switchedToVerlet_ = false;
+  bool switching_ = false;  // preparing that Verlet solver
 
   RunConfig config_;
   MPI_Comm comm_;

@@ -102,12 +102,46 @@ void Simulation::runImplicit() {
   } else {
     quasiStatic_->setRunHooks(outputs_.get(), observer_);
     quasiStatic_->run();
+    lastStep_ = stepOffset_ + quasiStatic_->acceptedSteps();
+    time_ = quasiStatic_->endTime();
+    if (quasiStatic_->switchedToVerlet()) switchToVerlet();
+    return;
   }
   const auto& times = relaxation_       ? config_.solver.dynamicRelaxationConfig.times
                       : noxQuasiStatic_ ? config_.solver.noxQuasiStaticConfig.times
                                         : config_.solver.quasiStaticConfig.times;
   lastStep_ = stepOffset_ + static_cast<long long>(times.size()) - 1;
   time_ = times.back();
+}
+
+void Simulation::switchToVerlet() {
+  // Adaptive Load-Stepping -> Switch to Verlet: the rest of the run, from the last converged
+  // load step to the final load time, by the explicit solver, as a chained solver would (the
+  // step numbers and the output files continue).
+  const AdaptiveLoadSteppingConfig a = config_.solver.quasiStaticConfig.adaptive;
+  SolverConfig verlet;
+  verlet.path = a.verletPath;
+  verlet.initialTime = quasiStatic_->switchTime();
+  verlet.finalTime = quasiStatic_->finalTime();
+  verlet.fixedDtGiven = a.verletFixedDtGiven;
+  verlet.fixedDt = a.verletFixedDt;
+  verlet.safetyFactor = a.verletSafetyFactor;
+  verlet.probeLength = config_.solver.probeLength;
+  stepOffset_ = lastStep_;
+  config_.solver = verlet;
+  time_ = verlet.initialTime;
+  switchedToVerlet_ = true;
+  switching_ = true;
+  prepareSolver();
+  switching_ = false;
+  conditions_->resume(time_);
+  if (a.verletOutputFrequency > 0) outputs_->setFrequency(a.verletOutputFrequency);
+  if (rank_ == 0) {
+    log_ << a.verletPath << ": from time " << time_ << ", step " << stepOffset_ << ", " << numSteps_
+         << " steps of " << dt_ << "\n"
+         << std::flush;
+  }
+  runSolver();
 }
 
 }  // namespace peridot

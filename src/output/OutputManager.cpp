@@ -184,6 +184,17 @@ bool OutputManager::fires(const File& f, long long step) const {
   return false;
 }
 
+void OutputManager::multiplyFrequency(long long factor) {
+  for (auto& f : files_)
+    for (auto& t : f.triggers)
+      if (t.frequency < (1LL << 40)) t.frequency *= factor;
+}
+
+void OutputManager::setFrequency(long long frequency) {
+  for (auto& f : files_)
+    for (auto& t : f.triggers) t.frequency = frequency;
+}
+
 bool OutputManager::due(long long step) const {
   for (const auto& f : files_)
     if (fires(f, step)) return true;

@@ -61,6 +61,12 @@ class OutputManager {
   // Collective. Writes the records due at `step` (step 0 is always written).
   void write(long long step, double time);
   bool due(long long step) const;
+  // Every stream's Output Frequency multiplied by `factor` (Adaptive output frequency: a halved
+  // load step doubles it) or set to `frequency` (Switch to Verlet's Output Frequency), as
+  // Peridigm changes its output managers' frequency; a record is due when its step number is a
+  // multiple of the frequency in force.
+  void multiplyFrequency(long long factor);
+  void setFrequency(long long frequency);
   std::vector<std::string> fileNames() const;
 
  private:

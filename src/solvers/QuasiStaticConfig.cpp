@@ -77,9 +77,13 @@ QuasiStaticConfig readQuasiStatic(ListReader& qs, double initialTime, double fin
   c.linearTolerance = qs.positiveNumber("Belos Relative Tolerance", 1e-4);
   c.printLinearStatus = qs.boolean("Belos Print Status", false);
   if (qs.has("Adaptive Load-Stepping")) {
-    throw InputError(qs.pathOf("Adaptive Load-Stepping"),
-                     "adaptive load stepping (and its Switch to Verlet) is not supported by "
-                     "Peridot yet; give more load steps instead");
+    if (!qs.isSublist("Adaptive Load-Stepping")) {
+      throw InputError(qs.pathOf("Adaptive Load-Stepping"),
+                       "must be a list (Maximum load step reductions in one step, Maximum total "
+                       "load step reductions, ...)");
+    }
+    ListReader adaptive = qs.sublist("Adaptive Load-Stepping");
+    c.adaptive = readAdaptiveLoadStepping(adaptive);
   }
   qs.finish();
   return c;

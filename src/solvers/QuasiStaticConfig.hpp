@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "deck/Deck.hpp"
+#include "solvers/AdaptiveLoadStepping.hpp"
 
 namespace peridot {
 
@@ -22,6 +23,7 @@ struct QuasiStaticConfig {
   bool printLinearStatus = false;
   std::string preconditioner = "Full Tangent";  // Peridigm Preconditioner: Block 3x3, None
   bool verbose = false;
+  AdaptiveLoadSteppingConfig adaptive;  // Adaptive Load-Stepping (enabled when the list is given)
 };
 
 // The times at which load steps end, the first being the initial time, from `Number of Load

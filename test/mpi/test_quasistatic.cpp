@@ -146,9 +146,20 @@ TEST(QuasiStatic, UnsupportedSolversAreRefused) {
   std::string message = errorOf<InputError>([&] { makeSimulation(diffusion); });
   EXPECT_NE(message.find("ImplicitDiffusion"), std::string::npos) << message;
   EXPECT_NE(message.find("not supported"), std::string::npos) << message;
+  // Adaptive Load-Stepping is supported (test_adaptive_load_stepping.cpp); its limits are
+  // required, as in Peridigm, and an unknown key in it is refused.
   const std::string adaptive = deck + "      Adaptive Load-Stepping:\n        Verbose: true\n";
   message = errorOf<InputError>([&] { makeSimulation(adaptive); });
-  EXPECT_NE(message.find("Adaptive Load-Stepping"), std::string::npos) << message;
+  EXPECT_NE(message.find("Adaptive Load-Stepping -> Maximum load step reductions in one step"),
+            std::string::npos)
+      << message;
+  const std::string unknown = deck +
+                              "      Adaptive Load-Stepping:\n"
+                              "        Maximum load step reductions in one step: 2\n"
+                              "        Maximum total load step reductions: 4\n"
+                              "        Verbose: true\n";
+  message = errorOf<InputError>([&] { makeSimulation(unknown); });
+  EXPECT_NE(message.find("Verbose"), std::string::npos) << message;
 }
 
 TEST(QuasiStatic, NonConvergenceNamesStepIterationsAndResidual) {

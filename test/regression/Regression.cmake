@@ -137,6 +137,33 @@ add_test(NAME ranks_QuasiStaticPlasticBar
     -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
 set_tests_properties(ranks_QuasiStaticPlasticBar PROPERTIES
   ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# QuasiStatic with Adaptive Load-Stepping on a notched bar with critical stretch damage (Newton
+# stalls as bonds break; the steps are halved, then Switch to Verlet carries the crack on): the
+# same step sequence, damage and iterations at 1, 2 and 3 ranks, displacements within
+# adaptive.comp.
+add_test(NAME ranks_AdaptiveNotchedBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/AdaptiveNotchedBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/AdaptiveNotchedBar
+    -DDECK=AdaptiveNotchedBar.xml -DOUTPUT=AdaptiveNotchedBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/adaptive.comp
+    "-DNPS=1;2;3" -DMPIEXEC=${MPIEXEC_EXECUTABLE}
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
+set_tests_properties(ranks_AdaptiveNotchedBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 900)
+# The same deck without Switch to Verlet: reductions exhausted, exit status 3, the message, the
+# outputs of the converged steps readable.
+add_test(NAME adaptive_exhausted_AdaptiveNotchedBar
+  COMMAND ${CMAKE_COMMAND}
+    -DCASE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/AdaptiveNotchedBar
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/adaptive_exhausted
+    -DDECK=AdaptiveNotchedBar.xml -DOUTPUT=AdaptiveNotchedBar.e
+    -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/adaptive.comp
+    -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunAdaptiveExhausted.cmake)
+set_tests_properties(adaptive_exhausted_AdaptiveNotchedBar PROPERTIES
+  ENVIRONMENT "${PERIDOT_MPI_ENV}" LABELS "regression" TIMEOUT 600)
 # Chained solvers (QuasiStatic then Implicit, Peridigm's XML form): the same at 1, 2 and 3 ranks
 # within implicitchain.comp, all records in one file.
 add_test(NAME ranks_ImplicitChainBar
