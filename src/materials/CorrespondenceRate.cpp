@@ -73,5 +73,20 @@ void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,
     sigma[k] = sigmaN[k] + dt * (2.0 * mu * d[k] + (k % 4 == 0 ? lambda * trace : 0.0));
 }
 
+double radialReturn(double mu, double H, double yieldNow, double* sigma) {
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;  // kept by the radial return
+  double dev[9], ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    dev[k] = sigma[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev[k] * dev[k];
+  }
+  const double q = std::sqrt(1.5 * ss);  // von Mises of the trial stress
+  if (q <= yieldNow || !(ss > 0)) return 0.0;
+  const double dgamma = (q - yieldNow) / (3.0 * mu + H);
+  const double shrink = 1.0 - 3.0 * mu * dgamma / q;
+  for (int k = 0; k < 9; ++k) sigma[k] = (k % 4 == 0 ? mean : 0.0) + shrink * dev[k];
+  return dgamma;
+}
+
 }  // namespace correspondence
 }  // namespace peridot

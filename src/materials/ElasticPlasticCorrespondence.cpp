@@ -120,20 +120,8 @@ void ElasticPlasticCorrespondence::unrotatedCauchyStress(int i, const double* d,
                                                          const double* sigmaN, double* sigma) {
   const double G = constants_.shearModulus;
   correspondence::hypoelasticIncrement(lame_, G, d, dt, sigmaN, sigma);  // trial
-  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;  // kept by the radial return
-  double dev[9];
-  const double ss = deviator(sigma, dev);
-  const double q = std::sqrt(1.5 * ss);  // von Mises of the trial stress
   const double yieldNow = yield_[i] + hardeningModulus_ * eqps_[i];
-  if (q <= yieldNow || !(ss > 0)) {
-    eqpsNew_[i] = eqps_[i];
-    return;
-  }
-  // Radial return: the deviator shrinks by 3 mu dgamma along its own direction.
-  const double dgamma = (q - yieldNow) / (3.0 * G + hardeningModulus_);
-  const double shrink = 1.0 - 3.0 * G * dgamma / q;
-  for (int k = 0; k < 9; ++k) sigma[k] = (k % 4 == 0 ? mean : 0.0) + shrink * dev[k];
-  eqpsNew_[i] = eqps_[i] + dgamma;
+  eqpsNew_[i] = eqps_[i] + correspondence::radialReturn(G, hardeningModulus_, yieldNow, sigma);
 }
 
 void ElasticPlasticCorrespondence::commitHistory(const std::vector<int>& points) {

@@ -50,6 +50,12 @@ class Operator {
   bool weights(std::size_t count, const double* xi, const double* w, const double* volume,
                double delta, double* g);
 
+  // The rows z_a = M^-1 e_a (a < dimension; basisSize values each, row-major) of the last
+  // successful weights() call: g_b = w_b / delta (z_a . Q(s_b)). A caller that needs the weight
+  // of a bond it did not pass (the reverse bond of a neighbour) keeps these.
+  const double* rows() const { return rows_.data(); }
+  int size() const { return size_; }
+
   // The monomials Q(xi / delta) of one bond (basisSize values).
   void monomials(const double* xi, double delta, double* q) const;
 
