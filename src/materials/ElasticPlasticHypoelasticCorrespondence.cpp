@@ -45,7 +45,8 @@ double ElasticPlasticHypoelasticCorrespondence::powerLawReturn(double mu, double
                                                                double eps0, double exponent,
                                                                double eqps, double* sigma) {
   const auto yieldAt = [&](double e) { return yieldStress * std::pow(1.0 + e / eps0, exponent); };
-  const double yieldNow = yieldAt(eqps);
+  // (1 + 0 / eps_0)^n = 1: a bond that never yielded needs no pow (most bonds, most steps).
+  const double yieldNow = eqps == 0.0 ? yieldStress : yieldAt(eqps);
   if (exponent == 0.0) return correspondence::radialReturn(mu, 0.0, yieldNow, sigma);
   const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
   double dev[9], ss = 0;
@@ -59,12 +60,15 @@ double ElasticPlasticHypoelasticCorrespondence::powerLawReturn(double mu, double
   // dgamma (sigma_y concave for n <= 1), so Newton from 0 climbs monotonically to the root.
   double dgamma = 0;
   for (int iteration = 0; iteration < 60; ++iteration) {
-    const double e = eqps + dgamma;
-    const double slope = yieldStress * exponent / eps0 * std::pow(1.0 + e / eps0, exponent - 1.0);
-    const double r = q - 3.0 * mu * dgamma - yieldAt(e);
+    const double base = 1.0 + (eqps + dgamma) / eps0;
+    const double yieldNew = yieldStress * std::pow(base, exponent);  // one pow per iteration
+    const double slope = yieldNew * exponent / (eps0 * base);
+    const double r = q - 3.0 * mu * dgamma - yieldNew;
     const double step = r / (3.0 * mu + slope);
     dgamma += step;
-    if (std::abs(step) <= 1e-15 * (dgamma + 1e-300)) break;
+    // Newton climbs to the root from below: a step that is no longer positive beyond rounding
+    // means it has arrived (a tolerance test on |step| alone can cycle at the last bit).
+    if (!(step > 1e-15 * dgamma)) break;
   }
   const double shrink = 1.0 - 3.0 * mu * dgamma / q;
   for (int k = 0; k < 9; ++k) sigma[k] = (k % 4 == 0 ? mean : 0.0) + shrink * dev[k];
