@@ -186,6 +186,9 @@ void HypoelasticCorrespondence::gradientWeights(const ModelState& s, int i, std:
 
 void HypoelasticCorrespondence::precompute(const ModelState& s, const std::vector<int>& points) {
   using namespace correspondence;
+  // The neighbours' J at the start of the step: committed by the last evaluation, or restored
+  // from a checkpoint (first call of this evaluation only; collective, as every rank calls).
+  if (!pending_) s.fields->refreshGhosts(kJacobian);
   pending_ = true;
   std::string message;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
@@ -295,8 +298,6 @@ void HypoelasticCorrespondence::computeForce(const ModelState& s, const std::vec
     }
     commitLaw(s, points_);
   }
-  // Neighbours read J at the start of the next step.
-  s.fields->refreshGhosts(kJacobian);
 }
 
 // f_i = J_i sum_j (T_ij - T_ji) J_j V_j with T_ij - T_ji = w (1/m_i + 1/m_j) sigma_ij Y / |Y|^2

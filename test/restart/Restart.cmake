@@ -49,3 +49,7 @@ peridot_restart_test(split_correspondence split Correspondence.yaml.in 16.0 8.0 
 # committed eps_p, both of which a restart must carry.
 peridot_restart_test(split_needleman split Needleman.yaml.in 16.0 8.0 10
                      "Equivalent_Plastic_Strain")
+# The hypoelastic correspondence family: its bond history (27 bond fields and eps_p per bond)
+# and node history (J, F, sigma_u, R, V, eps_p) across a restart.
+peridot_restart_test(split_hypoelastic split Hypoelastic.yaml.in 16.0 8.0 10
+                     "Equivalent_Plastic_Strain")
