@@ -112,10 +112,8 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
     const ModelState& state = s_.evaluator->state();
     double Kinv[9];
     for (int i = 0; i < n; ++i) {
-      // The correspondence models' own F (bond-associated ones included: their point F).
-      const auto family = (*s_.blocks)[(*s_.blockIndexOfPoint)[i]].material->family();
-      const bool model =
-          own && (family == "correspondence" || family == "bond-associated correspondence");
+      const bool model = own && (*s_.blocks)[(*s_.blockIndexOfPoint)[i]].material->family().find(
+                                    "correspondence") != std::string::npos;
       if (model)
         std::copy(own + 9 * i, own + 9 * i + 9, out.begin() + 9 * i);
       else
@@ -125,9 +123,10 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
   } else if (name == "Partial_Stress" || name == "Shape_Tensor_Inverse" ||
              name == "Cauchy_Stress" || name == "Unrotated_Cauchy_Stress" ||
              name == "Von_Mises_Stress" || name == "Hourglass_Force_Density" ||
-             name == "Equivalent_Plastic_Strain" || name == "Stress_Triaxiality" ||
-             name == "Rotation_Tensor" || name == "Left_Stretch_Tensor" ||
-             name == "Velocity_Gradient" || name == "Unrotated_Rate_Of_Deformation") {
+             name == "Equivalent_Plastic_Strain" || name == "Rotation_Tensor" ||
+             name == "Left_Stretch_Tensor" || name == "Velocity_Gradient" ||
+             name == "Unrotated_Rate_Of_Deformation" || name == "Jacobian_Determinant" ||
+             name == "Green_Lagrange_Strain" || name == "Stress_Triaxiality") {
     // Maintained by the correspondence models (zero at the points of other blocks).
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, c));
   } else if (name == "Contact_Force") {

@@ -113,9 +113,10 @@ void Simulation::checkVariables() {
     }
     if ((v == "Shape_Tensor_Inverse" || v == "Cauchy_Stress" || v == "Unrotated_Cauchy_Stress" ||
          v == "Von_Mises_Stress" || v == "Hourglass_Force_Density" ||
-         v == "Equivalent_Plastic_Strain" || v == "Stress_Triaxiality" || v == "Rotation_Tensor" ||
-         v == "Left_Stretch_Tensor" || v == "Velocity_Gradient" ||
-         v == "Unrotated_Rate_Of_Deformation") &&
+         v == "Equivalent_Plastic_Strain" || v == "Rotation_Tensor" || v == "Left_Stretch_Tensor" ||
+         v == "Velocity_Gradient" || v == "Unrotated_Rate_Of_Deformation" ||
+         v == "Jacobian_Determinant" || v == "Green_Lagrange_Strain" ||
+         v == "Stress_Triaxiality") &&
         !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a correspondence material (e.g. \"Elastic " +
                                  "Correspondence\"" +

@@ -44,7 +44,6 @@ const std::vector<std::string>& peridigmDamageModels() {
 const std::vector<std::string>& peridigmOutputVariablesNotYet() {
   static const std::vector<std::string> names = {
       "Normalized_Weighted_Volume",  // Pals' debugging field (never computed by Peridigm)
-      "Jacobian_Determinant",
       "Surface_Correction_Factor",
       "Concentration",
       "Flux_Divergence",

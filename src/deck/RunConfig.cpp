@@ -317,8 +317,13 @@ const std::vector<VariableInfo>& knownOutputVariables() {
        "unrotated rate of deformation d = R^T sym(L) R (correspondence models, rate form)"},
       {"Hourglass_Force_Density", 3, "hourglass part of the force density (correspondence)"},
       {"Equivalent_Plastic_Strain", 1, "equivalent plastic strain (plastic correspondence models)"},
+      {"Jacobian_Determinant", 1,
+       "J = det F, advanced as J (1 + tr L dt) (hypoelastic correspondence models)"},
+      {"Green_Lagrange_Strain", 9,
+       "Green strain (F^T F - I) / 2 of the advanced F (hypoelastic correspondence models)"},
       {"Stress_Triaxiality", 1,
-       "mean over von Mises stress of the Cauchy stress (plastic bond-associated models)"},
+       "mean stress over von Mises stress of the Cauchy stress (plastic bond-associated and "
+       "hypoelastic correspondence models)"},
       {"Contact_Force", 3, "Contact_Force_Density x volume"},
       {"Neighborhood_Volume", 1,
        "volume of the point's family: sum of its neighbours' volumes (times their cell "

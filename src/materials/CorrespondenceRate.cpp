@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "materials/Correspondence.hpp"
+#include "materials/J2Return.hpp"
 
 namespace peridot {
 namespace correspondence {
@@ -71,6 +72,15 @@ void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,
   const double trace = d[0] + d[4] + d[8];
   for (int k = 0; k < 9; ++k)
     sigma[k] = sigmaN[k] + dt * (2.0 * mu * d[k] + (k % 4 == 0 ? lambda * trace : 0.0));
+}
+
+double radialReturn(double mu, double H, double yieldNow, double* sigma) {
+  // J2Return's linear case from plastic strain 0: sigma_y(0) = yieldNow + H 0 = yieldNow and the
+  // slope H, the same arithmetic.
+  Hardening hardening;
+  hardening.yield = yieldNow;
+  hardening.modulus = H;
+  return radialReturn(mu, hardening, 0.0, sigma);
 }
 
 }  // namespace correspondence

@@ -34,5 +34,11 @@ void velocityGradient(const double* M, const double* Kinv, const double* Finv, d
 void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,
                           const double* sigmaN, double* sigma);
 
+// J2 radial return of a trial unrotated stress `sigma` (in place) onto the von Mises surface
+// sqrt(3/2) |dev sigma| = yieldNow + H dgamma (linear hardening modulus H, shear modulus mu):
+// returns dgamma, the increment of the equivalent plastic strain (0 for an elastic step, sigma
+// unchanged). The mean stress is kept; the deviator shrinks along itself by 3 mu dgamma.
+double radialReturn(double mu, double H, double yieldNow, double* sigma);
+
 }  // namespace correspondence
 }  // namespace peridot

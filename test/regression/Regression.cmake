@@ -97,6 +97,11 @@ peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Nee
                   NeedlemanCube.xml NeedlemanCube.e exact_correspondence.comp 1728)
 peridot_identical(NeedlemanBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanBar
                   NeedlemanBar.xml NeedlemanBar.e exact_correspondence.comp 0)
+# Isotropic Hardening Hypoelastic Correspondence (second-order gradient, bond-level stresses and
+# plastic history, B = N Z ghosted inside the force): bitwise equal at 1-4 ranks; the model's
+# homogeneous responses are checked in test/unit/test_hypoelastic_correspondence.cpp.
+peridot_identical(HypoelasticBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/HypoelasticBar
+                  HypoelasticBar.xml HypoelasticBar.e exact_hypoelastic.comp 0)
 peridot_identical(ViscoBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/ViscoBar
                   ViscoBar.xml ViscoBar.e exact_visco.comp 0)
 # Thermal loading (Prescribed Temperature, LPS thermal expansion) with a time-dependent

@@ -53,3 +53,7 @@ peridot_restart_test(split_needleman split Needleman.yaml.in 16.0 8.0 10
 # to are history the checkpoint must carry; bonds are partly damaged at the checkpoint and break
 # after it.
 peridot_restart_test(split_johnsoncook split JohnsonCook.yaml.in 16.0 8.0 10 "Damage")
+# The hypoelastic correspondence family: its bond history (27 bond fields and eps_p per bond)
+# and node history (J, F, sigma_u, R, V, eps_p) across a restart.
+peridot_restart_test(split_hypoelastic split Hypoelastic.yaml.in 16.0 8.0 10
+                     "Equivalent_Plastic_Strain")
