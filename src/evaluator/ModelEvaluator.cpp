@@ -310,6 +310,26 @@ bool ModelEvaluator::fusesDamage(const Block& b) const {
   return fusesCriticalStretch(b) || fusesSmoothBreak(b);
 }
 
+void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {
+  if (state_.bondDamage)
+    snapshot.bondDamage = fields_.bondFloat("Bond_Damage");
+  else
+    snapshot.bondDamage.clear();
+  snapshot.materials.resize(blocks_.size());
+  for (std::size_t k = 0; k < blocks_.size(); ++k)
+    blocks_[k].material->saveDamageState(snapshot.materials[k]);
+}
+
+void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
+  if (state_.bondDamage) {
+    auto& damage = fields_.bondFloat("Bond_Damage");
+    std::copy(snapshot.bondDamage.begin(), snapshot.bondDamage.end(), damage.begin());
+  }
+  // Blocks sharing a material instance saved the same state; restoring it twice is harmless.
+  for (std::size_t k = 0; k < blocks_.size() && k < snapshot.materials.size(); ++k)
+    blocks_[k].material->restoreDamageState(snapshot.materials[k]);
+}
+
 void ModelEvaluator::nodeDamage(double* damage) const {
   for (int i = 0; i < topology_.numOwned; ++i) {
     const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];

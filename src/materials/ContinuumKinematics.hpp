@@ -45,6 +45,8 @@ class ContinuumKinematics : public MaterialModel {
   void stiffnessSum(const ModelState& state, const std::vector<int>& points,
                     double* sum) const override;
   std::string family() const override { return "continuum kinematics"; }
+  void saveDamageState(std::vector<float>& state) const override { state = edgeDamage_; }
+  void restoreDamageState(const std::vector<float>& state) override { edgeDamage_ = state; }
   // f_p reads the positions of p and its neighbours only (its bonds, triangles and tetrahedra
   // are among them): probed by finite differences over the bond pattern.
   TangentReach tangentReach() const override { return TangentReach::Bond; }

@@ -174,6 +174,11 @@ class MaterialModel {
   // and commit once per converged step. Rate models (ModelState::dt, velocity) also get, in the
   // load-stepped solvers, dt = the load step and velocity = its displacement increment / dt.
   virtual bool advancesHistory() const { return false; }
+  // Irreversible damage the model keeps itself, besides the bond damage (the continuum-kinematics
+  // model's bonds between neighbours): a solver that undoes a rejected trial's breaks restores it
+  // with the bond damage (ModelEvaluator::saveDamage / restoreDamage).
+  virtual void saveDamageState(std::vector<float>& state) const { state.clear(); }
+  virtual void restoreDamageState(const std::vector<float>& /*state*/) {}
   // True when the model reads ModelState::velocity of its points and their neighbours (the rate
   // form of the correspondence models): the evaluator then ghosts the velocities.
   virtual bool needsVelocity() const { return false; }

@@ -81,10 +81,7 @@ double NOXQuasiStatic::evaluateAt(const TpetraVector& x) {
   setDisplacement(x);
   // Every evaluation of a load step starts from the damage the step started with: NOX's trial
   // points (line searches, difference quotients) must not break bonds for the next ones.
-  if (!stepDamage_.empty()) {
-    auto& damage = c_.fields->bondFloat("Bond_Damage");
-    std::copy(stepDamage_.begin(), stepDamage_.end(), damage.begin());
-  }
+  c_.evaluator->restoreDamage(stepDamage_);
   ++stats_.residualEvaluations;
   Timers::Scope timer(*c_.timers, "Residual");
   return problem_.evaluateResidual();
@@ -270,7 +267,6 @@ void NOXQuasiStatic::run() {
   printing.set("Output Information", information);
   printing.set("Output Stream", Teuchos::rcpFromRef(log));
   printing.set("Error Stream", Teuchos::rcpFromRef(log));
-  const bool hasDamage = c_.evaluator->state().bondDamage != nullptr;
   const auto runStart = std::chrono::steady_clock::now();
   for (std::size_t step = 1; step < times.size(); ++step) {
     const auto stepClock = std::chrono::steady_clock::now();
@@ -280,7 +276,7 @@ void NOXQuasiStatic::run() {
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
     problem_.beginStep(dt, &stepStart);
     if (tangent_) tangent_->setProbeTimeStep(dt);
-    if (hasDamage) stepDamage_ = c_.fields->bondFloat("Bond_Damage");
+    c_.evaluator->saveDamage(stepDamage_);
     tangentX_.reset();  // another load step: other prescribed values, other damage
     c_.conditions->applyPrescribedDisplacement(time, c_.u);
     if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);

@@ -70,8 +70,8 @@ class NOXQuasiStatic : public NOXProblem {
   TpetraVector* baseX_ = nullptr;  // matrix-free linearization point and its residual
   TpetraVector* baseF_ = nullptr;
   std::unique_ptr<TpetraVector> baseXStore_, baseFStore_, scratch_;
-  std::unique_ptr<TpetraVector> tangentX_;  // where the tangent was last assembled (this step)
-  std::vector<float> stepDamage_;           // bond damage at the start of the load step
+  std::unique_ptr<TpetraVector> tangentX_;     // where the tangent was last assembled (this step)
+  ModelEvaluator::DamageSnapshot stepDamage_;  // damage at the start of the load step
   std::vector<double> heldScratch_;
   Statistics stats_;
 };

@@ -54,12 +54,11 @@ double QuasiStatic::lineSearch(double residualNorm) {
   const int n3 = static_cast<int>(start_.size());
   for (int k = 0; k < n3; ++k) start_[k] = c_.u[k];
   // Bond damage is irreversible: a trial that breaks bonds and is then rejected must not leave
-  // them broken, so every trial starts from the damage before the search.
-  std::vector<float>* damage =
-      c_.evaluator->state().bondDamage ? &c_.fields->bondFloat("Bond_Damage") : nullptr;
-  if (damage) startDamage_ = *damage;
+  // them broken, so every trial starts from the damage before the search (the bond damage and
+  // what materials keep themselves).
+  c_.evaluator->saveDamage(startDamage_);
   auto tryStep = [&](double alpha) {
-    if (damage) std::copy(startDamage_.begin(), startDamage_.end(), damage->begin());
+    c_.evaluator->restoreDamage(startDamage_);
     for (int k = 0; k < n3; ++k) c_.u[k] = start_[k] + alpha * increment_[k];
     return problem_.evaluateResidual();
   };
@@ -167,10 +166,7 @@ QuasiStatic::StepResult QuasiStatic::solveStep(long long step, double previous, 
 void QuasiStatic::restore(const std::vector<double>& stepStart) {
   const int n3 = static_cast<int>(stepStart.size());
   for (int k = 0; k < n3; ++k) c_.u[k] = stepStart[k];
-  if (c_.evaluator->state().bondDamage) {
-    auto& damage = c_.fields->bondFloat("Bond_Damage");
-    std::copy(stepDamage_.begin(), stepDamage_.end(), damage.begin());
-  }
+  c_.evaluator->restoreDamage(stepDamage_);
 }
 
 void QuasiStatic::exhausted(long long step, const LoadSchedule& schedule, const StepResult& last,
@@ -242,8 +238,7 @@ void QuasiStatic::run() {
     for (int k = 0; k < n3; ++k) stepStart[k] = c_.u[k];
     // A cut step restarts from this state: bond damage is irreversible, so keep it. (History
     // models are not touched: a trial evaluation commits none, ModelState::commitHistory.)
-    if (adaptive.enabled && c_.evaluator->state().bondDamage)
-      stepDamage_ = c_.fields->bondFloat("Bond_Damage");
+    if (adaptive.enabled) c_.evaluator->saveDamage(stepDamage_);
     const StepResult r =
         solveStep(step, previous, time, stepStart, predictor, step > 1 || c_.predictorFromPrevious);
     stats_.attempts.push_back({previous, time, r.converged});

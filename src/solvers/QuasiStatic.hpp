@@ -88,11 +88,11 @@ class QuasiStatic {
   SolverContext c_;
   StaticProblem problem_;  // residual R = V (f + b), held degrees of freedom
   std::unique_ptr<Tangent> tangent_;
-  std::vector<double> increment_;      // owned: the Newton direction
-  std::vector<double> start_;          // owned: u at the start of the step / line search
-  std::vector<double> testStepStart_;  // setStepDt's step start (zero)
-  std::vector<float> startDamage_;     // bond damage at the start of the line search
-  std::vector<float> stepDamage_;      // bond damage at the start of the load step (adaptive)
+  std::vector<double> increment_;               // owned: the Newton direction
+  std::vector<double> start_;                   // owned: u at the start of the step / line search
+  std::vector<double> testStepStart_;           // setStepDt's step start (zero)
+  ModelEvaluator::DamageSnapshot startDamage_;  // damage at the start of the line search
+  ModelEvaluator::DamageSnapshot stepDamage_;   // at the start of the load step (adaptive)
   long long acceptedSteps_ = 0;
   double endTime_ = 0, switchTime_ = 0, finalTime_ = 0;
   bool switched_ = false;

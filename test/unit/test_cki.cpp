@@ -8,6 +8,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <random>
 #include <sstream>
@@ -153,6 +154,56 @@ TEST(ContinuumKinematics, ForcesAreTheEnergyGradientWithDamage) {
     EXPECT_GT(broken, 0.0);
     perturb(*pr, 0.004, 5, dims);  // all stretches below 0.08 now: nothing else breaks
     EXPECT_LT(gradientError(*pr, dims), 1e-6) << dims << "D";
+  }
+}
+
+// A load-stepped solver that rejects a trial restores the damage it saved before it
+// (ModelEvaluator::saveDamage / restoreDamage): with the bond damage, the bonds between
+// neighbours that the continuum-kinematics model tracks itself come back, so the next
+// evaluation gives the forces of a run that never made the trial, to the bit. Restoring the
+// bond damage alone does not.
+TEST(ContinuumKinematics, RestoredDamageUndoesARejectedTrial) {
+  for (int dims : {2, 3}) {
+    auto make = [&] {
+      std::unique_ptr<Problem> pr;
+      if (dims == 2)
+        pr = std::make_unique<PlanarProblem>(square(7), 2.515,
+                                             cki("Plane Strain", 2.0, 0.1, -1, -1, -1), 0.3, 1.0,
+                                             criticalStretch(0.08));
+      else
+        pr = std::make_unique<Problem>(cube(4), 1.8, cki("", 2.0, 0.15, -1, -1, -1),
+                                       criticalStretch(0.08));
+      return pr;
+    };
+    auto forces = [](Problem& pr) {
+      const double* f = pr.fields->node("Force_Density", 3);
+      return std::vector<double>(f, f + 3 * pr.topology.numOwned);
+    };
+    auto reference = make(), trial = make(), bondsOnly = make();
+    ModelEvaluator::DamageSnapshot before, beforeBondsOnly;
+    trial->evaluator->saveDamage(before);
+    bondsOnly->evaluator->saveDamage(beforeBondsOnly);
+    beforeBondsOnly.materials.clear();
+    for (Problem* pr : {trial.get(), bondsOnly.get()}) {
+      perturb(*pr, 0.2, 3, dims);  // the rejected trial: it breaks bonds
+      pr->evaluator->evaluate(0.0);
+      std::vector<double> dmg(pr->topology.numOwned);
+      pr->evaluator->nodeDamage(dmg.data());
+      double broken = 0;
+      for (double d : dmg) broken += d;
+      ASSERT_GT(broken, 0.0) << dims << "D";
+    }
+    trial->evaluator->restoreDamage(before);
+    bondsOnly->evaluator->restoreDamage(beforeBondsOnly);
+    for (Problem* pr : {reference.get(), trial.get(), bondsOnly.get()}) {
+      perturb(*pr, 0.004, 5, dims);  // below the critical stretch everywhere
+      pr->evaluator->evaluate(0.0);
+    }
+    const auto expected = forces(*reference);
+    EXPECT_EQ(std::memcmp(forces(*trial).data(), expected.data(), expected.size() * 8), 0)
+        << dims << "D";
+    EXPECT_NE(std::memcmp(forces(*bondsOnly).data(), expected.data(), expected.size() * 8), 0)
+        << dims << "D: the tracked bonds between neighbours were not part of the damage";
   }
 }
 
