@@ -6,7 +6,8 @@
 // correspondence models' rate form (their default) accumulates stress and yields too; each
 // correspondence model but the viscoplastic one (rate form only) is also measured with "Stress
 // Integration: Total Lagrangian Green Strain". The hypoelastic correspondence family (Peridigm's:
-// gradient on the current bonds, a stress per bond) is measured at gradient orders 1 and 2.
+// gradient on the current bonds, a stress per bond) is measured at gradient orders 1 and 2, the
+// elastic bond-associated model at gradient orders 1, 2 and 3.
 // Usage: bench_material_cost [--benchmark_min_time=1] [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
 #include <mpi.h>
@@ -98,6 +99,9 @@ struct Scene {
         m.set("Hardening Characteristic Strain", 1e-6);
         m.set("Hardening Exponent", 0.2);
       }
+    } else if (model.find("Bond Associated") != std::string::npos) {
+      // The bond-associated family: `integration` carries the gradient order.
+      if (!integration.empty()) m.set("Gradient Order Of Accuracy", std::stoi(integration));
     } else if (!integration.empty()) {
       m.set("Stress Integration", integration);
     }
@@ -176,6 +180,12 @@ BENCHMARK_CAPTURE(Evaluate, ElasticCorrespondence20, std::string("Elastic Corres
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Evaluate, ElasticBondAssociatedCorrespondence20,
                   std::string("Elastic Bond Associated Correspondence"), std::string(), 20)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticBondAssociatedCorrespondenceOrder2_20,
+                  std::string("Elastic Bond Associated Correspondence"), std::string("2"), 20)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Evaluate, ElasticBondAssociatedCorrespondenceOrder3_20,
+                  std::string("Elastic Bond Associated Correspondence"), std::string("3"), 20)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Evaluate, ElasticPlasticBondAssociatedCorrespondence20,
                   std::string("Elastic Plastic Bond Associated Correspondence"), std::string(), 20)

@@ -30,13 +30,22 @@ BondAssociatedCorrespondence::BondAssociatedCorrespondence(ListReader& p, const 
   constants_ = readTwoElasticConstants(p);
   lame_ = constants_.bulkModulus - 2.0 * constants_.shearModulus / 3.0;
   const long long order = p.integer("Gradient Order Of Accuracy", 1);
-  if (order > 1) {
+  if (order < 1) throw InputError(p.pathOf("Gradient Order Of Accuracy"), "must be at least 1");
+  if (order > gradient::kMaxOrder) {
     throw InputError(p.pathOf("Gradient Order Of Accuracy"),
                      "gradient order " + std::to_string(order) +
-                         ": higher-order gradient weights are not supported by Peridot yet; only "
-                         "order 1 (the shape-tensor gradient) is");
+                         ": Peridot's gradient weights go up to order " +
+                         std::to_string(gradient::kMaxOrder) +
+                         " (Peridigm sets no limit); orders above are not supported");
   }
-  if (order < 1) throw InputError(p.pathOf("Gradient Order Of Accuracy"), "must be at least 1");
+  order_ = static_cast<int>(order);
+  if (order_ > 1) {
+    op_ = gradient::Operator(order_, 3);
+    // Monomials degree by degree (materials/GradientOperator.hpp): (d + 1)(d + 2) / 2 of degree d.
+    for (int degree = 1; degree <= order_; ++degree)
+      parity_.insert(parity_.end(), static_cast<std::size_t>((degree + 1) * (degree + 2) / 2),
+                     degree % 2 ? -1.0 : 1.0);
+  }
   // As Peridigm: no hourglass control (the point of the model); the key is read and ignored.
   if (p.has("Hourglass Coefficient")) p.nonNegativeNumber("Hourglass Coefficient", 0.0);
   if (p.has("Apply Automatic Differentiation Jacobian")) {
@@ -72,8 +81,15 @@ void BondAssociatedCorrespondence::declareFields(FieldManager& fields) {
   for (int r = 0; r < 3; ++r) {
     fRow_[r] = fields.node(kDeformationGradientRows[r], 3);
     fdotRow_[r] = fields.node(kDeformationRateRows[r], 3);
-    bRow_[r] = fields.node(kStressIntegralRows[r], 3);
+    if (order_ == 1) bRow_[r] = fields.node(kStressIntegralRows[r], 3);
   }
+  bColumn_.clear();
+  bColumnNames_.clear();
+  if (order_ > 1)
+    for (int k = 0; k < op_.size(); ++k) {
+      bColumnNames_.push_back(kStressIntegralColumnPrefix + std::to_string(k));
+      bColumn_.push_back(fields.node(bColumnNames_.back(), 3));
+    }
   for (int k = 0; k < 9; ++k) {
     bondSigma_[k] = fields.bond(kBondUnrotatedCauchyStress[k], 0.0).data();
     bondRotation_[k] = fields.bond(kBondRotationTensor[k], k % 4 == 0 ? 1.0 : 0.0).data();
@@ -86,6 +102,16 @@ void BondAssociatedCorrespondence::declareFields(FieldManager& fields) {
     bondVonMises_ = fields.bond(kBondVonMisesStress, 0.0).data();
     bondTriaxiality_ = fields.bond(kBondStressTriaxiality, 0.0).data();
   }
+}
+
+std::vector<std::string> BondAssociatedCorrespondence::fieldsToSyncAfterPrecompute() const {
+  if (order_ > 1) return bColumnNames_;
+  return {kStressIntegralRows[0], kStressIntegralRows[1], kStressIntegralRows[2]};
+}
+
+std::string BondAssociatedCorrespondence::family() const {
+  if (order_ == 1) return "bond-associated correspondence";
+  return "bond-associated correspondence (gradient order " + std::to_string(order_) + ")";
 }
 
 std::vector<std::string> BondAssociatedCorrespondence::outputFields() const {
@@ -122,6 +148,7 @@ void BondAssociatedCorrespondence::initialize(const ModelState& s, const std::ve
   }
   bondEqpsNew_.resize(bonds, 0.0);
   bondTraction_.resize(3 * bonds, 0.0);
+  if (order_ > 1) scaledRows_.resize(3 * static_cast<std::size_t>(op_.size()) * n, 0.0);
   std::string message;
   for (int i : points) {
     double F[9];
@@ -132,6 +159,14 @@ void BondAssociatedCorrespondence::initialize(const ModelState& s, const std::ve
                 " is singular: a bond-associated correspondence model needs at least three "
                 "non-coplanar neighbours per point (Peridigm stops with \"failed to compute "
                 "gradient weights\"); is the horizon too small?";
+    }
+    if (order_ > 1 && !higherOrderWeights(s, i) && message.empty()) {
+      message = "Materials -> \"" + name_ + "\": the moment matrix of " +
+                correspondence::describePoint(s, i) +
+                " is singular: \"Gradient Order Of Accuracy\" " + std::to_string(order_) +
+                " needs enough neighbours in general position to fit every monomial of that "
+                "degree (Peridigm stops with \"failed to compute gradient weights\"); is the "
+                "horizon too small?";
     }
     weightedVolume_[i] = bondassociated::weightedVolume(s, i);
     for (int k = 0; k < 9; ++k) {
@@ -160,8 +195,14 @@ bool BondAssociatedCorrespondence::pointKinematics(const ModelState& s, int i,
   double* Kinv = shapeTensorInverse_ + 9 * i;
   double* F = deformationGradient_ + 9 * i;
   double M[9], Fdot[9];
-  const bool regular = shapeTensorAndDeformationGradient(s, i, Kinv, F, true, M);
-  multiply(M, Kinv, Fdot);
+  bool regular = shapeTensorAndDeformationGradient(s, i, Kinv, F, true, M);
+  if (order_ == 1) {
+    multiply(M, Kinv, Fdot);
+  } else {
+    // K^-1 stays an output; F and Fdot come from the higher-order weights.
+    regular = regular && higherOrderWeights(s, i);
+    if (regular) higherOrderGradients(s, i, F, Fdot);
+  }
   const double m = bondassociated::weightedVolume(s, i);
   weightedVolume_[i] = m;
   inverseWeightedVolume_[i] = m > 0 ? 1.0 / m : 0.0;
@@ -181,8 +222,12 @@ bool BondAssociatedCorrespondence::pointKinematics(const ModelState& s, int i,
       std::snprintf(when, sizeof when, " at time %.9g", s.time);
       message = "Materials -> \"" + name_ + "\": " + describePoint(s, i) +
                 (regular ? " has an inverted or singular deformation gradient"
-                         : " has a singular shape tensor (its intact bonds no longer span three "
-                           "non-coplanar directions)") +
+                 : order_ == 1
+                     ? " has a singular shape tensor (its intact bonds no longer span three "
+                       "non-coplanar directions)"
+                     : " has a singular shape tensor or moment matrix (its intact bonds no longer "
+                       "fit the monomials of \"Gradient Order Of Accuracy\" " +
+                           std::to_string(order_) + ")") +
                 when + "; Peridigm stops here too";
     }
     std::copy(unrotated_ + 9 * i, unrotated_ + 9 * i + 9, sigmaNew);
@@ -294,9 +339,80 @@ void BondAssociatedCorrespondence::bondStresses(const ModelState& s, int i, std:
     for (int r = 0; r < 3; ++r)
       for (int k = 0; k < 3; ++k) S[3 * r + k] += c * (P[3 * r + k] - traction[r] * xi[k]);
   }
-  double B[9];
-  multiply(S, shapeTensorInverse_ + 9 * i, B);
-  for (int k = 0; k < 9; ++k) bRow_[k / 3][3 * i + k % 3] = B[k];
+  if (order_ == 1) {
+    double B[9];
+    multiply(S, shapeTensorInverse_ + 9 * i, B);
+    for (int k = 0; k < 9; ++k) bRow_[k / 3][3 * i + k % 3] = B[k];
+    return;
+  }
+  // B = S Zs, column k (a 3-vector) per monomial.
+  const std::size_t q = static_cast<std::size_t>(op_.size());
+  const double* Z = scaledRows_.data() + 3 * q * static_cast<std::size_t>(i);
+  for (std::size_t k = 0; k < q; ++k)
+    for (int r = 0; r < 3; ++r)
+      bColumn_[k][3 * i + r] =
+          S[3 * r] * Z[k] + S[3 * r + 1] * Z[q + k] + S[3 * r + 2] * Z[2 * q + k];
+}
+
+bool BondAssociatedCorrespondence::higherOrderWeights(const ModelState& s, int i) {
+  const std::int64_t begin = s.topology->bondOffsets[i], end = s.topology->bondOffsets[i + 1];
+  const std::size_t count = static_cast<std::size_t>(end - begin);
+  bondXi_.resize(3 * count);
+  bondWeight_.resize(count);
+  bondVolume_.resize(count);
+  bondPhi_.resize(3 * count);
+  for (std::int64_t b = begin; b < end; ++b) {
+    const int j = s.topology->neighbors[b];
+    const std::size_t k = static_cast<std::size_t>(b - begin);
+    for (int d = 0; d < 3; ++d) bondXi_[3 * k + d] = s.x[3 * j + d] - s.x[3 * i + d];
+    double w = s.influence ? s.influence[b] : 1.0;
+    if (s.bondDamage) w *= 1.0 - s.bondDamage[b];
+    if (s.bondSides) w *= (s.bondSides[b] & 1);
+    bondWeight_[k] = w;
+    bondVolume_[k] = s.volume[j];
+  }
+  // The horizon only scales the monomials (conditioning); the weights do not depend on it.
+  const double delta = s.horizon[i];
+  const std::size_t q = static_cast<std::size_t>(op_.size());
+  double* Z = scaledRows_.data() + 3 * q * static_cast<std::size_t>(i);
+  if (!op_.weights(count, bondXi_.data(), bondWeight_.data(), bondVolume_.data(), delta,
+                   bondPhi_.data())) {
+    std::fill(Z, Z + 3 * q, 0.0);
+    return false;
+  }
+  // phi_b = (w_b / delta) z_a . q(xi_b / delta) = w_b (z_a / delta^(1 + degree)) . q(xi_b).
+  const double* rows = op_.rows();
+  std::size_t k = 0;
+  double power = delta * delta;  // delta^(1 + degree) for degree 1
+  for (int degree = 1; degree <= order_; ++degree, power *= delta)
+    for (int c = 0; c < (degree + 1) * (degree + 2) / 2; ++c, ++k)
+      for (int a = 0; a < 3; ++a) Z[a * q + k] = rows[a * q + k] / power;
+  return true;
+}
+
+void BondAssociatedCorrespondence::higherOrderGradients(const ModelState& s, int i, double* F,
+                                                        double* Fdot) const {
+  // Peridigm's form: F from the displacements u = y - x (small next to y for small strains).
+  double G[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, Gdot[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  const std::int64_t begin = s.topology->bondOffsets[i], end = s.topology->bondOffsets[i + 1];
+  for (std::int64_t b = begin; b < end; ++b) {
+    const int j = s.topology->neighbors[b];
+    const double* phi = bondPhi_.data() + 3 * (b - begin);
+    const double vj = s.volume[j];
+    for (int r = 0; r < 3; ++r) {
+      const double du =
+          ((s.y[3 * j + r] - s.x[3 * j + r]) - (s.y[3 * i + r] - s.x[3 * i + r])) * vj;
+      const double dv = (s.velocity[3 * j + r] - s.velocity[3 * i + r]) * vj;
+      for (int c = 0; c < 3; ++c) {
+        G[3 * r + c] += du * phi[c];
+        Gdot[3 * r + c] += dv * phi[c];
+      }
+    }
+  }
+  for (int k = 0; k < 9; ++k) {
+    F[k] = (k % 4 == 0 ? 1.0 : 0.0) + G[k];
+    Fdot[k] = Gdot[k];
+  }
 }
 
 void BondAssociatedCorrespondence::precompute(const ModelState& s, const std::vector<int>& points) {
@@ -314,10 +430,38 @@ void BondAssociatedCorrespondence::precompute(const ModelState& s, const std::ve
   throwIfAnyRank(message, s.topology->comm, true);
 }
 
-// f_i = sum_j [(w_ij / m_i + w_ji / m_j) t_b + (w_ij B_i + w_ji B_j) xi] V_j, t_b = P_b xi /
-// |xi|^2; one vectorisable pass.
+// The force, then (committing evaluations) the history.
 void BondAssociatedCorrespondence::computeForce(const ModelState& s,
                                                 const std::vector<int>& points) {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  if (order_ > 1)
+    higherOrderForce(s, points);
+  else
+    firstOrderForce(s, points);
+  // A trial keeps the history of the step's start (precompute wrote only the scratch copies).
+  if (!s.commitHistory) return;
+  for (int i : points) {
+    std::copy(unrotatedNew_.begin() + 9 * i, unrotatedNew_.begin() + 9 * i + 9, unrotated_ + 9 * i);
+    std::copy(rotationNew_.begin() + 9 * i, rotationNew_.begin() + 9 * i + 9, rotation_ + 9 * i);
+    std::copy(stretchNew_.begin() + 9 * i, stretchNew_.begin() + 9 * i + 9, leftStretch_ + 9 * i);
+    if (plastic_) eqps_[i] = eqpsNew_[i];
+    const std::int64_t first = offsets[i], last = offsets[i + 1];
+    for (int k = 0; k < 9; ++k) {
+      std::copy(bondSigmaNew_[k].begin() + first, bondSigmaNew_[k].begin() + last,
+                bondSigma_[k] + first);
+      std::copy(bondRotationNew_[k].begin() + first, bondRotationNew_[k].begin() + last,
+                bondRotation_[k] + first);
+      std::copy(bondStretchNew_[k].begin() + first, bondStretchNew_[k].begin() + last,
+                bondStretch_[k] + first);
+    }
+    std::copy(bondEqpsNew_.begin() + first, bondEqpsNew_.begin() + last, bondEqps_ + first);
+  }
+}
+
+// f_i = sum_j [(w_ij / m_i + w_ji / m_j) t_b + (w_ij B_i + w_ji B_j) xi] V_j, t_b = P_b xi /
+// |xi|^2; one vectorisable pass.
+void BondAssociatedCorrespondence::firstOrderForce(const ModelState& s,
+                                                   const std::vector<int>& points) const {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double *B0 = bRow_[0], *B1 = bRow_[1], *B2 = bRow_[2];
@@ -356,23 +500,45 @@ void BondAssociatedCorrespondence::computeForce(const ModelState& s,
     s.forceDensity[3 * i + 1] = f1;
     s.forceDensity[3 * i + 2] = f2;
   }
-  // A trial keeps the history of the step's start (precompute wrote only the scratch copies).
-  if (!s.commitHistory) return;
+}
+
+// f_i = sum_j [(w_ij / m_i + w_ji / m_j) t_b + w_ij B_i q(xi) - w_ji B_j q(-xi)] V_j, q the
+// monomials of xi and q(-xi) = parity q(xi).
+void BondAssociatedCorrespondence::higherOrderForce(const ModelState& s,
+                                                    const std::vector<int>& points) const {
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* invm = inverseWeightedVolume_;
+  const double* t = bondTraction_.data();
+  const double* x = s.x;
+  const int q = op_.size();
+  const double* parity = parity_.data();
+  double mono[64];
   for (int i : points) {
-    std::copy(unrotatedNew_.begin() + 9 * i, unrotatedNew_.begin() + 9 * i + 9, unrotated_ + 9 * i);
-    std::copy(rotationNew_.begin() + 9 * i, rotationNew_.begin() + 9 * i + 9, rotation_ + 9 * i);
-    std::copy(stretchNew_.begin() + 9 * i, stretchNew_.begin() + 9 * i + 9, leftStretch_ + 9 * i);
-    if (plastic_) eqps_[i] = eqpsNew_[i];
-    const std::int64_t first = offsets[i], last = offsets[i + 1];
-    for (int k = 0; k < 9; ++k) {
-      std::copy(bondSigmaNew_[k].begin() + first, bondSigmaNew_[k].begin() + last,
-                bondSigma_[k] + first);
-      std::copy(bondRotationNew_[k].begin() + first, bondRotationNew_[k].begin() + last,
-                bondRotation_[k] + first);
-      std::copy(bondStretchNew_[k].begin() + first, bondStretchNew_[k].begin() + last,
-                bondStretch_[k] + first);
+    const double invmI = invm[i];
+    double f[3] = {0, 0, 0};
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double omega = s.influence ? s.influence[b] : 1.0;
+      const double ownI = s.bondSides ? (s.bondSides[b] & 1) : 1.0;
+      const double ownJ = s.bondSides ? ((s.bondSides[b] >> 1) & 1) : 1.0;
+      const double wI = ownI * omega * intact, wJ = ownJ * omega * intact;
+      if (wI == 0.0 && wJ == 0.0) continue;
+      const double xi[3] = {x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1],
+                            x[3 * j + 2] - x[3 * i + 2]};
+      op_.monomials(xi, 1.0, mono);
+      const double a = wI * invmI + wJ * invm[j];
+      const double vj = s.volume[j];
+      for (int r = 0; r < 3; ++r) {
+        double gradientTerm = 0;
+        for (int k = 0; k < q; ++k)
+          gradientTerm +=
+              (wI * bColumn_[k][3 * i + r] - wJ * parity[k] * bColumn_[k][3 * j + r]) * mono[k];
+        f[r] += (a * t[3 * b + r] + gradientTerm) * vj;
+      }
     }
-    std::copy(bondEqpsNew_.begin() + first, bondEqpsNew_.begin() + last, bondEqps_ + first);
+    for (int r = 0; r < 3; ++r) s.forceDensity[3 * i + r] = f[r];
   }
 }
 

@@ -12,13 +12,19 @@
 // materials/J2Return.hpp, sigma_b = R_b sigma_u R_b^T, P_b = J_b sigma_b F_b^-T. The bond history
 // (sigma_u, R, V, eps_p) is kept per bond entry, as Peridigm keeps it.
 //
-// Force state (Peridigm's, for gradient order 1):
-//   T_i<xi> = w_ij [ P_b xi / (m_i |xi|^2) + S_i K_i^-1 xi ],
+// Force state (Peridigm's), with phi_ij the gradient weights of "Gradient Order Of Accuracy" n
+// (n = 1: phi_ij = w_ij K_i^-1 xi; n > 1: materials/GradientOperator.hpp on the reference bonds,
+// which also give F_i = I + sum_j (u_j - u_i) (x) phi_ij V_j and Fdot_i likewise):
+//   T_i<xi> = w_ij P_b xi / (m_i |xi|^2) + S_i phi_ij,
 //   S_i = sum_j w_ij (1/(2 m_i) + 1/(2 m_j)) P_b (I - xi (x) xi / |xi|^2) V_j,
 // so that sum_j T_i<xi> (x) xi V_j = P for a homogeneous deformation (the correspondence
-// condition). Pull form: f_i = sum_j [T_i<xi> - T_j<-xi>] V_j
+// condition: sum_j phi_ij (x) xi V_j = I at any order). Pull form: f_i = sum_j [T_i<xi> -
+// T_j<-xi>] V_j; for n = 1
 //   = sum_j [ (w_ij / m_i + w_ji / m_j) P_b xi / |xi|^2 + (w_ij B_i + w_ji B_j) xi ] V_j,
-// B = S K^-1, with P_b computed again by i's owner (the same bits as j's: F_b, L_b and the
+// B = S K^-1; for n > 1 phi_ij = w_ij Zs_i q(xi) (q the monomials of xi, Zs the rows of the
+// moment matrix's inverse rescaled by the horizon powers) and B = S Zs, 3 x dim q per point:
+//   = sum_j [ (w_ij / m_i + w_ji / m_j) P_b xi / |xi|^2 + w_ij B_i q(xi) - w_ji B_j q(-xi) ] V_j,
+// with P_b computed again by i's owner (the same bits as j's: F_b, L_b and the
 // bond's history are the same from both ends). Three passes: (1) point F, Fdot, 1/m, ghosted
 // inside precompute; (2) the bonds' stresses and B_i, ghosted after precompute; (3) the force.
 //
@@ -28,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "materials/GradientOperator.hpp"
 #include "materials/J2Return.hpp"
 #include "materials/MaterialModel.hpp"
 
@@ -41,9 +48,7 @@ class BondAssociatedCorrespondence : public MaterialModel {
   double poissonsRatio() const override { return constants_.poissonsRatio; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
-  std::vector<std::string> fieldsToSyncAfterPrecompute() const override {
-    return {kStressIntegralRows[0], kStressIntegralRows[1], kStressIntegralRows[2]};
-  }
+  std::vector<std::string> fieldsToSyncAfterPrecompute() const override;
   void precompute(const ModelState& state, const std::vector<int>& points) override;
   void computeForce(const ModelState& state, const std::vector<int>& points) override;
   void storedEnergyDensity(const ModelState& state, const std::vector<int>& points,
@@ -52,14 +57,16 @@ class BondAssociatedCorrespondence : public MaterialModel {
   std::vector<std::string> historyNodeFields() const override;
   bool advancesHistory() const override { return true; }
   bool needsVelocity() const override { return true; }
-  // Not bonded to plain correspondence points: the force reads the far end's B and 1/m.
-  std::string family() const override { return "bond-associated correspondence"; }
+  // Not bonded to plain correspondence points, nor to bond-associated points of another gradient
+  // order: the force reads the far end's B (whose layout is the order's) and 1/m.
+  std::string family() const override;
   // f_i reads B_j, which reads the stresses of j's bonds, which read F of j's neighbours: three
   // bonds deep, beyond the probed tangent's reach. Explicit dynamics only (Peridigm has no
   // implicit tangent for these models either).
   TangentReach tangentReach() const override { return TangentReach::None; }
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
   bool plastic() const { return plastic_; }
+  int gradientOrder() const { return order_; }
 
   static constexpr const char* kShapeTensorInverse = "Shape_Tensor_Inverse";
   static constexpr const char* kDeformationGradient = "Deformation_Gradient";
@@ -98,6 +105,8 @@ class BondAssociatedCorrespondence : public MaterialModel {
   static constexpr const char* kStressIntegralRows[3] = {
       "BondAssociated_B_Row_X", "BondAssociated_B_Row_Y", "BondAssociated_B_Row_Z"};
   static constexpr const char* kInverseWeightedVolume = "BondAssociated_Inverse_Weighted_Volume";
+  // Gradient order n > 1: column k of B = S Zs, one ghosted 3-vector per monomial.
+  static constexpr const char* kStressIntegralColumnPrefix = "BondAssociated_B_Column_";
 
  protected:
   BondAssociatedCorrespondence(ListReader& params, const std::string& name);
@@ -110,6 +119,16 @@ class BondAssociatedCorrespondence : public MaterialModel {
   ElasticConstants constants_;
   bool plastic_ = false;
   correspondence::Hardening hardening_;
+  // "Gradient Order Of Accuracy" n; for n > 1 the gradient operator, the parity (-1)^degree of
+  // each monomial (q(-xi) = parity q(xi)), each owned point's rescaled rows Zs (3 x dim q: the
+  // weight of bond xi is w Zs q(xi), q the monomials of xi itself), the ghosted columns of B,
+  // and the scratch of one point's bonds.
+  int order_ = 1;
+  gradient::Operator op_{1, 3};
+  std::vector<double> parity_, scaledRows_;
+  std::vector<double*> bColumn_;
+  std::vector<std::string> bColumnNames_;
+  std::vector<double> bondXi_, bondWeight_, bondVolume_, bondPhi_;
   // Point outputs and point history (sigma_u, R, V, eps_p: outputs only, see above).
   double *shapeTensorInverse_ = nullptr, *deformationGradient_ = nullptr, *cauchy_ = nullptr,
          *unrotated_ = nullptr, *vonMises_ = nullptr, *rotation_ = nullptr, *leftStretch_ = nullptr,
@@ -137,8 +156,18 @@ class BondAssociatedCorrespondence : public MaterialModel {
   // dt; returns the new eps_p.
   double updateStress(const double* d, double dt, const double* sigmaN, double eqpsN,
                       double* sigma) const;
-  // Pass 1 for owned point i: F, Fdot, 1/m and the point outputs; false if K is singular.
+  // Pass 1 for owned point i: F, Fdot, 1/m and the point outputs; false if K (or, for n > 1,
+  // the moment matrix) is singular.
   bool pointKinematics(const ModelState& s, int i, std::string& message);
+  // For n > 1: the gradient weights phi_ij of owned point i's bonds into bondPhi_, and its Zs;
+  // false when the moment matrix is singular.
+  bool higherOrderWeights(const ModelState& s, int i);
+  // For n > 1: F_i = I + sum_j (u_j - u_i) (x) phi_ij V_j and M = sum_j (v_j - v_i) (x) phi_ij
+  // V_j (= Fdot_i), from the weights of the last higherOrderWeights(i).
+  void higherOrderGradients(const ModelState& s, int i, double* F, double* Fdot) const;
+  // Pass 3 (the force), for n = 1 (one vectorisable pass) and n > 1.
+  void firstOrderForce(const ModelState& s, const std::vector<int>& points) const;
+  void higherOrderForce(const ModelState& s, const std::vector<int>& points) const;
   // Pass 2 for owned point i: its bonds' stresses, B_i.
   void bondStresses(const ModelState& s, int i, std::string& message);
 };

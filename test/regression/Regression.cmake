@@ -91,6 +91,10 @@ peridot_identical(BondAssociatedCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/deck
                   BondAssociatedCube.xml BondAssociatedCube.e exact_bondassociated.comp 1000)
 peridot_identical(BondAssociatedBar ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/BondAssociatedBar
                   BondAssociatedBar.xml BondAssociatedBar.e exact_bondassociated.comp 0)
+# The same bar with Gradient Order Of Accuracy 2 (higher-order weights, B = S Zs ghosted by
+# columns, the reverse weight of each bond from the far end's columns): bitwise equal too.
+peridot_identical(BondAssociatedBarOrder2 ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/BondAssociatedBar
+                  BondAssociatedBarOrder2.xml BondAssociatedBarOrder2.e exact_bondassociated.comp 0)
 # Viscoplastic Needleman Correspondence with a flaw: bitwise equal at 1-4 ranks; every point is
 # also checked against a scalar return with its own yield stress (test/mpi/test_needleman_cube.cpp).
 peridot_identical(NeedlemanCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/NeedlemanCube
