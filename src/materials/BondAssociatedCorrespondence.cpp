@@ -547,16 +547,9 @@ void BondAssociatedCorrespondence::storedEnergyDensity(const ModelState&,
                                                        double* out) const {
   // The complementary energy of the point's unrotated stress, p^2 / (2K) + s:s / (4 mu), as the
   // rate form of the plain correspondence models.
-  for (int i : points) {
-    const double* sigma = unrotated_ + 9 * i;
-    const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
-    double ss = 0;
-    for (int k = 0; k < 9; ++k) {
-      const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
-      ss += dev * dev;
-    }
-    out[i] = 0.5 * mean * mean / constants_.bulkModulus + 0.25 * ss / constants_.shearModulus;
-  }
+  for (int i : points)
+    out[i] = correspondence::complementaryEnergyDensity(
+        constants_.bulkModulus, constants_.shearModulus, unrotated_ + 9 * i);
 }
 
 }  // namespace peridot

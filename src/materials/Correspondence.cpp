@@ -321,16 +321,6 @@ void CorrespondenceMaterial::unrotatedCauchyStress(int, const double* d, double 
   correspondence::hypoelasticIncrement(lame_, constants_.shearModulus, d, dt, sigmaN, sigma);
 }
 
-double CorrespondenceMaterial::rateEnergyDensity(const double* sigma) const {
-  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
-  double ss = 0;
-  for (int k = 0; k < 9; ++k) {
-    const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
-    ss += dev * dev;
-  }
-  return 0.5 * mean * mean / constants_.bulkModulus + 0.25 * ss / constants_.shearModulus;
-}
-
 double CorrespondenceMaterial::energyDensity(int, const double* E) const {
   const double trace = E[0] + E[4] + E[8];
   double EE = 0;
@@ -576,7 +566,8 @@ void CorrespondenceMaterial::storedEnergyDensity(const ModelState&, const std::v
                                                  double* out) const {
   for (int i : points) {
     if (rateForm()) {
-      out[i] = rateEnergyDensity(unrotated_ + 9 * i);
+      out[i] = correspondence::complementaryEnergyDensity(
+          constants_.bulkModulus, constants_.shearModulus, unrotated_ + 9 * i);
       continue;
     }
     const double* F = deformationGradient_ + 9 * i;

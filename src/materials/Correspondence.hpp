@@ -143,9 +143,6 @@ class CorrespondenceMaterial : public MaterialModel {
                                      double* sigma);
   // Recoverable energy density of point i at Green strain E (no hourglass term).
   virtual double energyDensity(int i, const double* E) const;
-  // The rate form's: the complementary energy of the unrotated stress, p^2 / (2K) + s:s / (4 mu)
-  // (p the mean stress, s the deviator), the linear-elastic energy of that stress.
-  double rateEnergyDensity(const double* sigma) const;
   // The St Venant-Kirchhoff stress S = lambda tr(E) I + 2 mu E.
   void elasticStress(const double* E, double* S) const;
   const std::string& name() const { return name_; }

@@ -74,6 +74,16 @@ void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,
     sigma[k] = sigmaN[k] + dt * (2.0 * mu * d[k] + (k % 4 == 0 ? lambda * trace : 0.0));
 }
 
+double complementaryEnergyDensity(double K, double mu, const double* sigma) {
+  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
+  double ss = 0;
+  for (int k = 0; k < 9; ++k) {
+    const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
+    ss += dev * dev;
+  }
+  return 0.5 * mean * mean / K + 0.25 * ss / mu;
+}
+
 double radialReturn(double mu, double H, double yieldNow, double* sigma) {
   // J2Return's linear case from plastic strain 0: sigma_y(0) = yieldNow + H 0 = yieldNow and the
   // slope H, the same arithmetic.

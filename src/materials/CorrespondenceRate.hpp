@@ -34,6 +34,11 @@ void velocityGradient(const double* M, const double* Kinv, const double* Finv, d
 void hypoelasticIncrement(double lambda, double mu, const double* d, double dt,
                           const double* sigmaN, double* sigma);
 
+// The rate form's stored energy density: the complementary energy of the unrotated stress,
+// p^2 / (2K) + s:s / (4 mu) (p the mean stress, s the deviator), the linear-elastic energy of
+// that stress (the plain, hypoelastic and bond-associated correspondence models).
+double complementaryEnergyDensity(double K, double mu, const double* sigma);
+
 // J2 radial return of a trial unrotated stress `sigma` (in place) onto the von Mises surface
 // sqrt(3/2) |dev sigma| = yieldNow + H dgamma (linear hardening modulus H, shear modulus mu):
 // returns dgamma, the increment of the equivalent plastic strain (0 for an elastic step, sigma

@@ -339,20 +339,12 @@ void HypoelasticCorrespondence::forceLoop(const ModelState& s) {
   }
 }
 
-double HypoelasticCorrespondence::rateEnergyDensity(const double* sigma) const {
-  const double mean = (sigma[0] + sigma[4] + sigma[8]) / 3.0;
-  double ss = 0;
-  for (int k = 0; k < 9; ++k) {
-    const double dev = sigma[k] - (k % 4 == 0 ? mean : 0.0);
-    ss += dev * dev;
-  }
-  return 0.5 * mean * mean / constants_.bulkModulus + 0.25 * ss / constants_.shearModulus;
-}
-
 void HypoelasticCorrespondence::storedEnergyDensity(const ModelState&,
                                                     const std::vector<int>& points,
                                                     double* out) const {
-  for (int i : points) out[i] = rateEnergyDensity(unrotated_ + 9 * i);
+  for (int i : points)
+    out[i] = correspondence::complementaryEnergyDensity(
+        constants_.bulkModulus, constants_.shearModulus, unrotated_ + 9 * i);
 }
 
 }  // namespace peridot

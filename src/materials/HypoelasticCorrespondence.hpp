@@ -83,7 +83,6 @@ class HypoelasticCorrespondence : public MaterialModel {
   void bondStressesWith(const ModelState& s, const Law& law);
   template <class Law>
   void pointStressesWith(const ModelState& s, const std::vector<int>& points, const Law& law);
-  double rateEnergyDensity(const double* sigma) const;
 
   ElasticConstants constants_;
   double lame_ = 0.0;
