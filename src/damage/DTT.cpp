@@ -62,8 +62,8 @@ void DTT::computeDamage(const ModelState& s, const std::vector<int>& points, flo
   const int* neighbors = s.topology->neighbors.data();
   const double* y = s.y;
   const double* zeta = s.bondLength;
-  const double s0 = s0PlusFactor_ * criticalStretch_.value(),
-               s1 = s1PlusFactor_ * criticalStretch_.value();
+  // The law the fused pair loops apply (BondLaw::brokenFraction): one definition for both.
+  const BondLaw law = bondLaw();
   for (int i : points) {
     const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
@@ -73,7 +73,7 @@ void DTT::computeDamage(const ModelState& s, const std::vector<int>& points, flo
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
       const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
       // 1 - mu(S*) = max over the history of 1 - mu(s); rounding to float is monotone too.
-      const float broken = static_cast<float>(dttBrokenFraction(stretch, s0, s1));
+      const float broken = static_cast<float>(law.brokenFraction(stretch));
       bondDamage[b] = std::max(bondDamage[b], broken);
     }
   }
