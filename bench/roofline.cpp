@@ -8,8 +8,10 @@
 #include <mpi.h>
 
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "damage/DamageModel.hpp"
 #include "evaluator/ModelEvaluator.hpp"
@@ -133,6 +135,107 @@ void PMBForceLoopFusedCriticalStretch(benchmark::State& state) {
       static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(PMBForceLoopFusedCriticalStretch)->Unit(benchmark::kMillisecond);
+
+// An experiment for issue 16 (not what Peridot runs): the same PMB + critical-stretch update
+// over a *half* bond list (each pair once, j > i), the pair force added to i and subtracted from
+// j, as codes that use Newton's third law do. It halves the square roots, divisions and streamed
+// bytes, but scatters into j (no vector lanes for the sum) and changes the order in which a
+// point's force is summed (so results would no longer be identical at any rank count).
+// Reported per one-sided bond, as the loops above.
+void PMBHalfListExperiment(benchmark::State& state) {
+  Scene& s = scene();
+  const ModelState& st = s.evaluator->state();
+  const std::int64_t* off = s.topology.bondOffsets.data();
+  const int* nb = s.topology.neighbors.data();
+  const double* c = s.fields->node("PMB_Micromodulus", 1);
+  const int n = s.topology.numOwned;
+  std::vector<std::int64_t> halfOffsets(n + 1, 0);
+  std::vector<int> half;
+  std::vector<double> halfLength;
+  std::vector<float> halfDamage;
+  for (int i = 0; i < n; ++i) {
+    for (std::int64_t b = off[i]; b < off[i + 1]; ++b)
+      if (nb[b] > i && nb[b] < n) {
+        half.push_back(nb[b]);
+        halfLength.push_back(st.bondLength[b]);
+        halfDamage.push_back(0.0f);
+      }
+    halfOffsets[i + 1] = static_cast<std::int64_t>(half.size());
+  }
+  std::vector<double> f(3 * n);
+  const double criticalStretch = 0.5;
+  for (auto _ : state) {
+    std::fill(f.begin(), f.end(), 0.0);
+    for (int i = 0; i < n; ++i) {
+      const double yi0 = st.y[3 * i], yi1 = st.y[3 * i + 1], yi2 = st.y[3 * i + 2];
+      const double ci = c[i], vi = st.volume[i];
+      double f0 = 0, f1 = 0, f2 = 0;
+      for (std::int64_t b = halfOffsets[i]; b < halfOffsets[i + 1]; ++b) {
+        const int j = half[b];
+        const double zb = halfLength[b];
+        const double Y0 = st.y[3 * j] - yi0, Y1 = st.y[3 * j + 1] - yi1, Y2 = st.y[3 * j + 2] - yi2;
+        const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+        if ((dY - zb) / zb > criticalStretch) halfDamage[b] = 1.0f;
+        const double g = (ci + c[j]) * (1.0 - halfDamage[b]) * (dY - zb) / (2.0 * zb * dY);
+        f0 += g * st.volume[j] * Y0;
+        f1 += g * st.volume[j] * Y1;
+        f2 += g * st.volume[j] * Y2;
+        f[3 * j] -= g * vi * Y0;
+        f[3 * j + 1] -= g * vi * Y1;
+        f[3 * j + 2] -= g * vi * Y2;
+      }
+      f[3 * i] += f0;
+      f[3 * i + 1] += f1;
+      f[3 * i + 2] += f2;
+    }
+    benchmark::DoNotOptimize(f.data());
+  }
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["half pairs"] = static_cast<double>(half.size());
+}
+BENCHMARK(PMBHalfListExperiment)->Unit(benchmark::kMillisecond);
+
+// Its control: the full list walked by the same scalar code (no vector lanes, no gathers: without
+// `omp simd` GCC keeps the force sum in order, so it does not vectorize the loop), to tell the
+// half list's gain from the loss of the vector gathers.
+void PMBFullListScalarExperiment(benchmark::State& state) {
+  Scene& s = scene();
+  const ModelState& st = s.evaluator->state();
+  const std::int64_t* off = s.topology.bondOffsets.data();
+  const int* nb = s.topology.neighbors.data();
+  const double* c = s.fields->node("PMB_Micromodulus", 1);
+  const int n = s.topology.numOwned;
+  std::vector<float> damage(s.topology.numBonds(), 0.0f);
+  std::vector<double> f(3 * n);
+  const double criticalStretch = 0.5;
+  for (auto _ : state) {
+    for (int i = 0; i < n; ++i) {
+      const double yi0 = st.y[3 * i], yi1 = st.y[3 * i + 1], yi2 = st.y[3 * i + 2];
+      const double ci = c[i];
+      double f0 = 0, f1 = 0, f2 = 0;
+      for (std::int64_t b = off[i]; b < off[i + 1]; ++b) {
+        const int j = nb[b];
+        const double zb = st.bondLength[b];
+        const double Y0 = st.y[3 * j] - yi0, Y1 = st.y[3 * j + 1] - yi1, Y2 = st.y[3 * j + 2] - yi2;
+        const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+        if ((dY - zb) / zb > criticalStretch) damage[b] = 1.0f;
+        const double g =
+            (ci + c[j]) * (1.0 - damage[b]) * (dY - zb) * st.volume[j] / (2.0 * zb * dY);
+        f0 += g * Y0;
+        f1 += g * Y1;
+        f2 += g * Y2;
+      }
+      f[3 * i] = f0;
+      f[3 * i + 1] = f1;
+      f[3 * i + 2] = f2;
+    }
+    benchmark::DoNotOptimize(f.data());
+  }
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(PMBFullListScalarExperiment)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
