@@ -13,6 +13,11 @@ Per file (the pre-crack tip is at x0 = 50 mm on the line y0 = 20 mm, delta = 1 m
 * branching: the first record at which a point with damage > 0.3 lies farther than 2 delta from
   the line y0 (the crack has left the line); the branch point x_b is the farthest point with
   damage > 0.5 within delta/2 of the line at the last record;
+* crack moves: the first record at which the tip lies beyond x0 (paper 001 reads the start off
+  its speed curve, "zero until the crack starts propagating"); the initiation above comes later,
+  by the time the tip takes to cover delta;
+* tip at the branch point: when the tip reaches x_b (linear between records): when the crack
+  branches, where the branching time above waits until a branch has left the line by 2 delta;
 * angle: the slope of a line fitted to the points with damage > 0.5 more than delta above y0
   with x_b < x < x_b + 8 delta (the upper branch of the first branching), in degrees.
 --check-speed LOW HIGH exits 1 unless every run's largest tip speed over c_R is in [LOW, HIGH]
@@ -42,12 +47,15 @@ def analyse(path):
     tip = np.maximum(tip, X0)
     started = np.nonzero(tip > X0 + DELTA)[0]
     t_init = t[started[0]] if len(started) else math.nan
+    moved = np.nonzero(tip > X0)[0]
+    t_move = t[moved[0]] if len(moved) else math.nan
     speed = np.full_like(tip, np.nan)
     speed[1:-1] = (tip[2:] - tip[:-2]) / (t[2:] - t[:-2])
     off = np.array([((d > 0.3) & (np.abs(y - Y0) > 2 * DELTA) & (x > X0)).any() for d in dmg])
     branched = np.nonzero(off)[0]
     r = dict(path=path, x=x, y=y, t=t, dmg=dmg, tip=tip, speed=speed, t_init=t_init,
-             t_branch=math.nan, x_branch=math.nan, angle=math.nan)
+             t_move=t_move, t_at_branch=math.nan, t_branch=math.nan, x_branch=math.nan,
+             angle=math.nan)
     r["vmax"] = np.nanmax(speed) / C_R if np.isfinite(speed).any() else math.nan
     run = (t > t_init) & np.isfinite(speed)
     if len(branched):
@@ -55,6 +63,11 @@ def analyse(path):
         last = dmg[-1]
         online = (last > 0.5) & (np.abs(y - Y0) < 0.5 * DELTA)
         r["x_branch"] = x[online].max() if online.any() else X0
+        at = np.nonzero(tip >= r["x_branch"])[0]
+        if len(at) and at[0] > 0:
+            k = at[0]
+            r["t_at_branch"] = t[k - 1] + (r["x_branch"] - tip[k - 1]) / (tip[k] - tip[k - 1]) * (
+                t[k] - t[k - 1])
         sel = ((last > 0.5) & (y > Y0 + DELTA) & (x > r["x_branch"])
                & (x < r["x_branch"] + 8 * DELTA))
         if sel.sum() >= 3:
@@ -74,13 +87,15 @@ def main():
     a = ap.parse_args()
     rows = [analyse(p) for p in a.files]
     head = ("file, points, final t (us), initiation (us), largest tip speed / c_R, mean speed to "
-            "branching / c_R, branching (us), branch x (mm), upper branch angle (deg)")
+            "branching / c_R, branching (us), branch x (mm), upper branch angle (deg), "
+            "crack moves (us), tip at the branch point (us)")
     print(head)
     lines = []
     for r in rows:
         line = (f"{r['path']}, {len(r['x'])}, {r['t'][-1] * 1e6:.1f}, {r['t_init'] * 1e6:.1f}, "
                 f"{r['vmax']:.3f}, {r['vmean']:.3f}, {r['t_branch'] * 1e6:.1f}, "
-                f"{r['x_branch'] * 1e3:.1f}, {r['angle']:.1f}")
+                f"{r['x_branch'] * 1e3:.1f}, {r['angle']:.1f}, {r['t_move'] * 1e6:.1f}, "
+                f"{r['t_at_branch'] * 1e6:.1f}")
         print(line)
         lines.append(line)
     if a.csv:

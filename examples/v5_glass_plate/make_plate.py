@@ -2,7 +2,7 @@
 """V5 (paper 001 section 3, paper 002 section 4.3): the soda-lime glass plate with a pre-crack,
 planar (plane stress), as a Peridot deck.
 
-    /usr/bin/python3 make_plate.py MODEL SIGMA_MPA M [--final US] [--every US]
+    /usr/bin/python3 make_plate.py MODEL SIGMA_MPA M [--final US] [--every US] [--partial-volumes]
 
 MODEL: pmb (PMB: bond-based, critical stretch), dtt (bond-based with paper 002's DTT law),
 lpst (LPS-T: `Elastic` LPS with the DTT law), lsjt (LSJ-T: `Linearized LPS` with `LSJ-T`).
@@ -25,12 +25,14 @@ ap.add_argument("m", type=int, help="delta / h")
 ap.add_argument("--final", type=float, default=None, help="final time, us")
 ap.add_argument("--every", type=float, default=0.5, help="output interval, us")
 ap.add_argument("--dt", type=float, default=0.02, help="time step, us")
+ap.add_argument("--partial-volumes", action="store_true",
+                help="partial-volume quadrature (the papers' partial areas) instead of the centre rule")
 a = ap.parse_args()
 
 W, H, A, DELTA = 0.1, 0.04, 0.05, 1.0e-3
 h = DELTA / a.m
 nx, ny = round(W / h), round(H / h)
-horizon = (a.m + 0.015) * h
+horizon = DELTA if a.partial_volumes else (a.m + 0.015) * h  # partial volumes: the cells cut by the circle count in part
 final = a.final if a.final is not None else {0.2: 150.0, 2.0: 43.0, 4.0: 20.0}.get(a.sigma, 30.0)
 prefix = f"v5_m{a.m}_"
 with open(prefix + "points.txt", "w") as f:
@@ -53,7 +55,7 @@ else:
       Poisson's Ratio: 0.22"""
     influence = "Conical Over Zeta"
 damage = {"pmb": "Critical Stretch", "dtt": "DTT", "lpst": "DTT", "lsjt": "LSJ-T"}[a.model]
-tag = f"v5_{a.model}_s{a.sigma:g}_m{a.m}".replace(".", "p")
+tag = f"v5_{a.model}_s{a.sigma:g}_m{a.m}".replace(".", "p") + ("_pv" if a.partial_volumes else "")
 every = max(1, round(a.every / a.dt))
 deck = f"""# V5 glass plate, made by make_plate.py {a.model} {a.sigma:g} {a.m}: {nx} x {ny} points,
 # h = {h * 1e3:.4f} mm, horizon {horizon * 1e3:.4f} mm, traction {a.sigma:g} MPa, {final:g} us.
@@ -64,7 +66,7 @@ Peridigm:
     Dimension: 2
     Thickness: 1.0e-3
     Influence Function: {influence}
-    Bond Filters:
+{"    Partial Volumes: true" + chr(10) if a.partial_volumes else ""}    Bond Filters:
       Pre Crack:
         Type: Rectangular_Plane
         Normal_X: 0.0
