@@ -96,8 +96,11 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
   if (rank == 0) {
     std::cerr << "peridot: error: stopped " << why << " at step " << simulation.lastStep()
               << ", time " << simulation.time()
-              << " without a checkpoint (the outputs hold the records written so far; add "
-                 "\"Restart: true\" to the deck to be able to continue)"
+              << " without a checkpoint (the outputs hold the records written so far; "
+              << (simulation.stoppedInImplicitSolver()
+                      ? "the QuasiStatic, NOXQuasiStatic, Implicit and Adaptive Dynamic "
+                        "Relaxation solvers write no checkpoint)"
+                      : "add \"Restart: true\" to the deck to be able to continue)")
               << std::endl;
   }
   return kStoppedWithoutRestart;

@@ -26,25 +26,6 @@
 
 namespace peridot {
 
-namespace {
-
-std::string formatSeconds(double s) {
-  std::ostringstream out;
-  if (s < 60) {
-    out << std::fixed << std::setprecision(1) << s << " s";
-  } else if (s < 3600) {
-    out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
-  } else if (s < 1e6 * 3600) {
-    out << static_cast<long long>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
-        << " min";
-  } else {
-    out << "more than a million hours";  // also inf/NaN: no cast of a value an int cannot hold
-  }
-  return out.str();
-}
-
-}  // namespace
-
 Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     : config_(std::move(config)), comm_(comm), log_(log) {
   Timers::Scope setup(timers_, "Setup");

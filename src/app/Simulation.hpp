@@ -42,6 +42,9 @@ class Simulation {
   // Restart a checkpoint of the last completed step was written first.
   bool stopped() const { return stopped_; }
   int stopSignal() const { return stopSignal_; }
+  // True when the stop came during QuasiStatic, NOXQuasiStatic, Implicit or Adaptive Dynamic
+  // Relaxation, which write no checkpoint.
+  bool stoppedInImplicitSolver() const { return stoppedInImplicitSolver_; }
   // The step and time the run reached (the checkpoint's, when stopped).
   // Collective: checks that the output files can be created (without creating them) and rank 0
   // prints points, bonds, the stable time step, the time step, the steps and the outputs.
@@ -155,6 +158,7 @@ class Simulation {
   long long stepOffset_ = 0;  // chained solvers: the steps of the solvers before this one
   bool resumed_ = false, stopped_ = false;
   int stopSignal_ = 0;
+  bool stoppedInImplicitSolver_ = false;
   // Temperature conditions: owned Temperature and Temperature_Change (null without them), and
   // the first non-finite prescribed temperature of the last step (reported with checkFinite).
   double *temperature_ = nullptr, *temperatureChange_ = nullptr;

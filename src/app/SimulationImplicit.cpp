@@ -1,13 +1,30 @@
 // The implicit solvers' part of a run: set-up checks and the hand-over to the solver, which
 // lives in src/solvers (the explicit Verlet loop stays in Simulation.cpp).
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <ostream>
+
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
+#include "core/Format.hpp"
+#include "restart/RunControl.hpp"
 #include "solvers/DynamicRelaxation.hpp"
 #include "solvers/Implicit.hpp"
 #include "solvers/NOXQuasiStatic.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
+
+namespace {
+
+// Thrown by the per-step hook on every rank alike (the decision is collective) to leave an
+// implicit solver's step loop after a completed step; caught in runImplicit.
+struct StopAfterStep {
+  int signal;
+};
+
+}  // namespace
 
 void Simulation::checkImplicit() {
   if (config_.restart.enabled) {
@@ -86,25 +103,59 @@ void Simulation::runImplicit() {
     for (const auto& f : outputs_->fileNames()) log_ << "Output: " << f << "\n";
     log_ << std::flush;
   }
-  if (implicit_) {
-    implicit_->setRunHooks(outputs_.get(), observer_);
-    implicit_->run();
-    lastStep_ = stepOffset_ + numSteps_;
-    time_ = config_.solver.initialTime + static_cast<double>(numSteps_) * dt_;
-    return;
-  }
-  if (relaxation_) {
-    relaxation_->setRunHooks(outputs_.get(), observer_);
-    relaxation_->run();
-  } else if (noxQuasiStatic_) {
-    noxQuasiStatic_->setRunHooks(outputs_.get(), observer_);
-    noxQuasiStatic_->run();
-  } else {
-    quasiStatic_->setRunHooks(outputs_.get(), observer_);
-    quasiStatic_->run();
-    lastStep_ = stepOffset_ + quasiStatic_->acceptedSteps();
-    time_ = quasiStatic_->endTime();
-    if (quasiStatic_->switchedToVerlet()) switchToVerlet();
+  // After every completed step (the solvers call this once its outputs are written): the
+  // caller's observer, a stop signal on any rank (RunControl, collective: the implicit solvers
+  // write no checkpoint, so the run ends there with the records written so far, as a Verlet run
+  // without Restart), and for Implicit, whose steps print nothing unless Verbose, a progress
+  // line every 5 s.
+  // (The solver keeps a copy of the hook: it captures nothing of this frame by reference.)
+  const auto start = std::chrono::steady_clock::now();
+  auto lastReport = std::make_shared<std::chrono::steady_clock::time_point>(start);
+  const long long firstRecord = stepOffset_;
+  std::function<void(long long, double)> afterStep = [this, start, lastReport, firstRecord](
+                                                         long long record, double t) {
+    if (observer_) observer_(record, t);
+    lastStep_ = record;
+    time_ = t;
+    const RunControl::Decision decision = control_->afterStep(record, false, 0.0);
+    if (decision.stop) throw StopAfterStep{decision.signal};
+    if (!implicit_ || rank_ != 0 || record == firstRecord) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - *lastReport).count() <= 5.0) return;
+    *lastReport = now;
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    const long long done = record - firstRecord, last = firstRecord + numSteps_;
+    log_ << "  step " << record << "/" << last << "  t = " << t << "  elapsed "
+         << formatSeconds(elapsed) << "  remaining ~"
+         << formatSeconds(elapsed / static_cast<double>(done) * static_cast<double>(last - record))
+         << std::endl;
+  };
+  try {
+    if (implicit_) {
+      implicit_->setRunHooks(outputs_.get(), afterStep);
+      implicit_->run();
+      lastStep_ = stepOffset_ + numSteps_;
+      time_ = config_.solver.initialTime + static_cast<double>(numSteps_) * dt_;
+      return;
+    }
+    if (relaxation_) {
+      relaxation_->setRunHooks(outputs_.get(), afterStep);
+      relaxation_->run();
+    } else if (noxQuasiStatic_) {
+      noxQuasiStatic_->setRunHooks(outputs_.get(), afterStep);
+      noxQuasiStatic_->run();
+    } else {
+      quasiStatic_->setRunHooks(outputs_.get(), afterStep);
+      quasiStatic_->run();
+      lastStep_ = stepOffset_ + quasiStatic_->acceptedSteps();
+      time_ = quasiStatic_->endTime();
+      if (quasiStatic_->switchedToVerlet()) switchToVerlet();
+      return;
+    }
+  } catch (const StopAfterStep& stop) {
+    stopped_ = true;
+    stoppedInImplicitSolver_ = true;
+    stopSignal_ = stop.signal;
     return;
   }
   const auto& times = relaxation_       ? config_.solver.dynamicRelaxationConfig.times

@@ -1,8 +1,11 @@
 #pragma once
 // Numbers in messages: the shortest text that reads back as the same double (1e-07, not
 // 0.000000 or -9.9999999999999995e-08).
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 namespace peridot {
@@ -14,6 +17,22 @@ inline std::string formatNumber(double value) {
     if (std::strtod(buffer, nullptr) == value) break;
   }
   return buffer;
+}
+
+// Durations in progress lines: "12.3 s", "4 min 7 s", "2 h 13 min".
+inline std::string formatSeconds(double s) {
+  std::ostringstream out;
+  if (s < 60) {
+    out << std::fixed << std::setprecision(1) << s << " s";
+  } else if (s < 3600) {
+    out << static_cast<int>(s / 60) << " min " << static_cast<int>(std::fmod(s, 60)) << " s";
+  } else if (s < 1e6 * 3600) {
+    out << static_cast<long long>(s / 3600) << " h " << static_cast<int>(std::fmod(s, 3600) / 60)
+        << " min";
+  } else {
+    out << "more than a million hours";  // also inf/NaN: no cast of a value an int cannot hold
+  }
+  return out.str();
 }
 
 }  // namespace peridot

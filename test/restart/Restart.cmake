@@ -5,6 +5,8 @@
 #   restart_peridigm_perforation: the same in Peridigm's form (XML decks, an Exodus mesh)
 #   restart_signal:       a run cut by SIGTERM after its first periodic checkpoint, then the same
 #                         command again on another rank count
+#   restart_signal_implicit: an Implicit run (no checkpoint) cut by SIGTERM: it stops after the
+#                         step under way with status 5 and a readable output
 #   restart_refused:      a truncated checkpoint, one from another deck and one from another mesh
 #                         are refused with messages naming the file and the mismatch
 add_executable(last_record_diff ${CMAKE_CURRENT_LIST_DIR}/last_record_diff.cpp)
@@ -35,6 +37,8 @@ peridot_restart_test(peridigm_perforation peridigm PeridigmPerforation.xml.in 4.
 peridot_restart_test(split_lsjt split LSJT.yaml.in 1.0e-5 5.0e-6 10 "Damage")
 peridot_restart_test(signal signal Perforation.yaml.in 6.0e-5 0 10 "Damage")
 peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
+# An Implicit run of 10^5 steps stopped by SIGTERM: status 5, the completed steps' records.
+peridot_restart_test(signal_implicit signal_implicit ImplicitLong.yaml.in 10.0 0 1 "")
 # Elastic-plastic history (bond fields and the node field Lambda) across a restart.
 peridot_restart_test(split_plastic split Plastic.yaml.in 16.0 8.0 10 "Lambda")
 peridot_restart_test(split_visco split Visco.yaml.in 16.0 8.0 10 "Dilatation")

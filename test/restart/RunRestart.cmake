@@ -1,4 +1,5 @@
-# Driver of the restart tests (see Restart.cmake). Variables: MODE (split, signal, refused),
+# Driver of the restart tests (see Restart.cmake). Variables: MODE (split, signal,
+# signal_implicit, refused),
 # CASE_DIR, DECK_IN (a deck template with @INITIAL@ @FINAL@ @OUTPUT@ @FREQUENCY@ @RESTART@),
 # WORK_DIR, FINAL, HALF, FREQUENCY, NONZERO (variables that must be nonzero at the end), MPIEXEC,
 # PERIDOT, LAST_RECORD_DIFF, SIGNAL_RUN.
@@ -69,6 +70,34 @@ if(MODE STREQUAL "peridigm")
   run(3 Run2.xml 0 log)
   expect_in("${log}" "Restart: continuing from checkpoint")
   compare(Run2.e Full.e)
+  return()
+endif()
+
+if(MODE STREQUAL "signal_implicit")
+  # The implicit solvers write no checkpoint, but a stop signal still ends the run after the
+  # step under way, on every rank alike, with the records of the completed steps readable.
+  deck(Long.yaml 0.0 ${FINAL} Long "")
+  execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} Long.yaml Long.e long.log
+                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
+  file(READ "${WORK_DIR}/long.log" log)
+  message("---- Long.yaml (Implicit) on 2 ranks, SIGTERM once under way: status ${rc}\n${log}")
+  if(NOT rc EQUAL 5)
+    message(FATAL_ERROR "the implicit run stopped by SIGTERM should exit with status 5")
+  endif()
+  expect_in("${log}" "write no checkpoint")
+  string(REGEX MATCH "stopped after SIGTERM at step ([0-9]+)" found "${log}")
+  if(NOT found)
+    message(FATAL_ERROR "expected \"stopped after SIGTERM at step N\" in the log above")
+  endif()
+  set(step "${CMAKE_MATCH_1}")
+  execute_process(COMMAND ncdump -h Long.e WORKING_DIRECTORY "${WORK_DIR}" OUTPUT_VARIABLE header
+                  RESULT_VARIABLE rc)
+  string(REGEX MATCH "time_step = UNLIMITED ; // \\(([0-9]+) currently\\)" found "${header}")
+  math(EXPR expected "${step} + 1")
+  if(NOT rc EQUAL 0 OR NOT CMAKE_MATCH_1 EQUAL expected)
+    message(FATAL_ERROR "Long.e should be readable with the records of steps 0-${step} "
+                        "(${expected}), it has '${CMAKE_MATCH_1}'")
+  endif()
   return()
 endif()
 
