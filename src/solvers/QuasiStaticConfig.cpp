@@ -1,6 +1,7 @@
 #include "solvers/QuasiStaticConfig.hpp"
 
 #include <sstream>
+#include <string>
 
 #include "core/Error.hpp"
 #include "core/Format.hpp"
@@ -22,6 +23,13 @@ std::vector<double> readLoadSteps(ListReader& list, double initialTime, double f
     }
     const long long n = list.integer("Number of Load Steps");
     if (n < 1) throw InputError(list.pathOf("Number of Load Steps"), "must be at least 1");
+    // Each load step is a nonlinear solve and its time is kept (8 bytes a step, on every rank):
+    // a count past 1e8 is a typing error, not a run (2^31 would allocate 17 GB first).
+    if (n > 100000000) {
+      throw InputError(list.pathOf("Number of Load Steps"),
+                       "must be at most 1e8 (got " + std::to_string(n) +
+                           "; each load step is a nonlinear solve)");
+    }
     times.push_back(initialTime);
     for (long long k = 1; k <= n; ++k)
       times.push_back(initialTime + k * (finalTime - initialTime) / static_cast<double>(n));

@@ -363,3 +363,6 @@ peridot_baddeck(output_label_too_long DECK output_label_too_long.yaml
   EXPECT [[Output -> Output Variables -> Left_Force_Of_The_Notched_Specimen_Sum: the name is 38 characters long; an Exodus variable name holds at most 32]])
 peridot_baddeck(partial_stress_without_flag DECK partial_stress_without_flag.yaml
   EXPECT [[Output -> Output Variables -> Partial_Stress: "Partial_Stress" needs an "Elastic" material with "Compute Partial Stress: true"]])
+# Fuzz (solver seeds): 2^31 load steps allocated their times before anything else ran (a hang).
+peridot_baddeck(fuzz_load_steps_2e31 DECK fuzz_load_steps_2e31.yaml
+  EXPECT [[Solver -> QuasiStatic -> Number of Load Steps: must be at most 1e8 (got 2147483648]])
