@@ -132,6 +132,162 @@ def seed_contact():
 
 SEEDS = [seed_quickgrid, seed_text, seed_exodus, seed_contact]
 
+# The second seed set (--seed-set solvers): the implicit solvers, the correspondence families,
+# ductile damage and the planar LPS-T/LSJ-T laws, which came after the first campaign. Each is a
+# small PdQuickGrid bar or plate (node sets inline), a few load or time steps.
+
+
+def quickgrid_bar(nx=6, ny=3, nz=3):
+    return ("Discretization", [
+        ("Type", "PdQuickGrid"),
+        ("TensorProduct3DMeshGenerator", [
+            ("X Origin", 0.0), ("Y Origin", 0.0), ("Z Origin", 0.0),
+            ("X Length", float(nx)), ("Y Length", float(ny)), ("Z Length", float(nz)),
+            ("Number Points X", nx), ("Number Points Y", ny), ("Number Points Z", nz)])])
+
+
+def end_sets(nx=6, ny=3, nz=3):
+    left = " ".join(str(1 + nx * k) for k in range(ny * nz))
+    right = " ".join(str(nx + nx * k) for k in range(ny * nz))
+    return [("Left Node Set", left), ("Right Node Set", right)]
+
+
+def stretched_ends(rate="1.0e-3*t*x"):
+    bcs = end_sets()
+    for side in ("Left", "Right"):
+        for c, v in (("x", rate), ("y", "0.0"), ("z", "0.0")):
+            bcs.append(("%s %s" % (side, c.upper()), [
+                ("Type", "Prescribed Displacement"), ("Node Set", side + " Node Set"),
+                ("Coordinate", c), ("Value", v)]))
+    return ("Boundary Conditions", bcs)
+
+
+def lps_bar(solver):
+    return [
+        quickgrid_bar(),
+        ("Materials", [("Steel", [
+            ("Material Model", "Elastic"), ("Density", 7800.0),
+            ("Young's Modulus", 200.0e9), ("Poisson's Ratio", 0.25)])]),
+        ("Damage Models", [("Brittle", [
+            ("Damage Model", "Critical Stretch"), ("Critical Stretch", 0.02)])]),
+        ("Blocks", [("Bar", [("Block Names", "block_1"), ("Material", "Steel"),
+                             ("Damage Model", "Brittle"), ("Horizon", 1.51)])]),
+        stretched_ends(),
+        solver,
+        ("Output", output_list("run", 1, ("Displacement", "Force_Density", "Damage"))),
+    ]
+
+
+def seed_quasistatic():
+    return lps_bar(("Solver", [("Initial Time", 0.0), ("Final Time", 1.0), ("QuasiStatic", [
+        ("Number of Load Steps", 2), ("Relative Tolerance", 1.0e-8),
+        ("Maximum Solver Iterations", 10), ("Belos Relative Tolerance", 1.0e-10),
+        ("Adaptive Load-Stepping", [("Maximum load step reductions in one step", 3),
+                                    ("Maximum total load step reductions", 6)])])]))
+
+
+def seed_nox():
+    return lps_bar(("Solver", [("Initial Time", 0.0), ("Final Time", 1.0), ("NOXQuasiStatic", [
+        ("Nonlinear Solver", "Line Search Based"), ("Number of Load Steps", 2),
+        ("Max Solver Iterations", 20), ("Relative Tolerance", 1.0e-8),
+        ("Direction", [("Method", "Newton"), ("Newton", [("Linear Solver", [
+            ("Jacobian Operator", "Matrix-Free"), ("Preconditioner", "None"),
+            ("Tolerance", 1.0e-6)])])]),
+        ("Line Search", [("Method", "Polynomial")])])]))
+
+
+def seed_implicit():
+    return lps_bar(("Solver", [("Initial Time", 0.0), ("Final Time", 4.0e-4), ("Implicit", [
+        ("Fixed dt", 1.0e-4), ("Beta", 0.25), ("Gamma", 0.5), ("Absolute Tolerance", 1.0e-6),
+        ("Maximum Solver Iterations", 10)])]))
+
+
+def seed_relaxation():
+    return lps_bar(("Solver", [("Initial Time", 0.0), ("Final Time", 1.0),
+                               ("Adaptive Dynamic Relaxation", [
+                                   ("Number of Load Steps", 2), ("Relative Tolerance", 1.0e-6)])]))
+
+
+def metal_bar(material, damage=None, nx=8, ny=4, nz=4, horizon=2.015):
+    blocks = [("Block Names", "block_1"), ("Material", "Metal"), ("Horizon", horizon)]
+    deck = [
+        quickgrid_bar(nx, ny, nz),
+        ("Materials", [("Metal", [("Material Model", material), ("Density", 1.0),
+                                  ("Young's Modulus", 1.0), ("Poisson's Ratio", 0.3),
+                                  ("Yield Stress", 2.0e-3)] + extra_keys(material))]),
+    ]
+    if damage:
+        deck.append(("Damage Models", [("Ductile", damage)]))
+        blocks.append(("Damage Model", "Ductile"))
+    left = " ".join(str(1 + nx * k) for k in range(ny * nz))
+    right = " ".join(str(nx + nx * k) for k in range(ny * nz))
+    deck += [
+        ("Blocks", [("Bar", blocks)]),
+        ("Boundary Conditions", [
+            ("Left Node Set", left), ("Right Node Set", right),
+            ("Pull Left", [("Type", "Prescribed Displacement"), ("Node Set", "Left Node Set"),
+                           ("Coordinate", "x"), ("Value", "-0.004*t")]),
+            ("Pull Right", [("Type", "Prescribed Displacement"), ("Node Set", "Right Node Set"),
+                            ("Coordinate", "x"), ("Value", "0.004*t")])]),
+        ("Solver", [("Initial Time", 0.0), ("Final Time", 4.0),
+                    ("Verlet", [("Safety Factor", 0.5)])]),
+        ("Output", output_list("run", 4, ("Displacement", "Damage", "Cauchy_Stress",
+                                          "Equivalent_Plastic_Strain"))),
+    ]
+    return deck
+
+
+def extra_keys(material):
+    if "Hypoelastic" in material:
+        return [("Actual Horizon", 2.015), ("Gradient Order Of Accuracy", 2)]
+    if "Bond Associated" in material:
+        return []
+    return [("Hourglass Coefficient", 0.05), ("Hardening Modulus", 0.02)]
+
+
+def seed_ductile():
+    return metal_bar("Isotropic Hardening Correspondence", [
+        ("Damage Model", "Johnson Cook"), ("Damage Parameter 1", 0.001),
+        ("Damage Parameter 2", 0.004), ("Damage Parameter 3", 1.5),
+        ("Threshold Damage", 0.4), ("Critical Damage", 0.7)])
+
+
+def seed_hypoelastic():
+    return metal_bar("Elastic Plastic Hypoelastic Correspondence")
+
+
+def seed_bond_associated():
+    return metal_bar("Elastic Plastic Bond Associated Correspondence")
+
+
+def seed_planar():
+    return [
+        ("Discretization", [("Type", "PdQuickGrid"), ("Thickness", 0.001),
+                            ("Influence Function", "Conical Over Zeta"),
+                            ("TensorProduct2DMeshGenerator", [
+                                ("X Origin", 0.0), ("Y Origin", 0.0), ("X Length", 0.012),
+                                ("Y Length", 0.008), ("Number Points X", 12),
+                                ("Number Points Y", 8)])]),
+        ("Materials", [("Glass", [("Material Model", "Linearized LPS"), ("Plane Stress", True),
+                                  ("Density", 2440.0), ("Young's Modulus", 72.0e9),
+                                  ("Poisson's Ratio", 0.22)])]),
+        ("Damage Models", [("Brittle", [("Damage Model", "LSJ-T"), ("Fracture Energy", 3.8)])]),
+        ("Blocks", [("Plate", [("Block Names", "block_1"), ("Material", "Glass"),
+                               ("Damage Model", "Brittle"), ("Horizon", 0.003015)])]),
+        ("Boundary Conditions", [
+            ("All Node Set", " ".join(str(k) for k in range(1, 97))),
+            ("Pull", [("Type", "Initial Velocity"), ("Node Set", "All Node Set"),
+                      ("Coordinate", "y"), ("Value", "50.0*(y - 0.004)/0.004")])]),
+        ("Solver", [("Initial Time", 0.0), ("Final Time", 1.0e-6),
+                    ("Verlet", [("Safety Factor", 0.7)])]),
+        ("Output", output_list("run", 5, ("Displacement", "Damage", "Dilatation"))),
+    ]
+
+
+SOLVER_SEEDS = [seed_quasistatic, seed_nox, seed_implicit, seed_relaxation, seed_ductile,
+                seed_hypoelastic, seed_bond_associated, seed_planar]
+SEED_SETS = {"classic": SEEDS, "solvers": SOLVER_SEEDS}
+
 # ---------------------------------------------------------------------------------------------
 # Serialization (what a user would write).
 
@@ -638,7 +794,7 @@ def base_files(args):
 
 def deck_case(args, k, np, base):
     rng = random.Random("deck-%d-%d" % (args.seed, k))
-    tree = rng.choice(SEEDS)()
+    tree = rng.choice(SEED_SETS[args.seed_set])()
     fmt = rng.choice(["xml", "yaml"])
     whats = [mutate_tree(rng, tree, fmt) for _ in range(rng.choice([1, 1, 2, 3]))]
     text = to_xml(tree) if fmt == "xml" else to_yaml(tree)
@@ -722,6 +878,9 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=60.0)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--seed-set", choices=sorted(SEED_SETS), default="classic",
+                    help="the decks that mutated decks start from (a case id names the same "
+                         "input only with the same --seed-set)")
     ap.add_argument("--work", default="/tmp/peridot-fuzz")
     ap.add_argument("--only", default="", help="comma-separated case ids to run again")
     args = ap.parse_args()
@@ -729,7 +888,7 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     base = base_files(args)
     # The seeds themselves must run: a mutation is then the only difference.
-    for seed in SEEDS:
+    for seed in SEED_SETS[args.seed_set]:
         for fmt in ("xml", "yaml"):
             files = dict(base)
             files["deck." + fmt] = (to_xml(seed()) if fmt == "xml" else to_yaml(seed())).encode()
