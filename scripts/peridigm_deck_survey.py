@@ -287,6 +287,9 @@ BAD_SIGNS = re.compile(r'ignor|unknown key|unused', re.I)
 
 def first_message(text):
     for line in text.splitlines():
+        if 'error' in line:
+            return line.strip()
+    for line in text.splitlines():
         s = line.strip()
         if s and ('rror' in s or 'not ' in s or 'refus' in s.lower() or 'unknown' in s.lower()):
             return s
