@@ -295,14 +295,14 @@ def prepare(deck_path, work):
     mesh = disc.get('Input Mesh File')
     if disc.get('Type') == 'Exodus' and mesh:
         target = os.path.join(dest, mesh)
-        if not os.path.exists(target):
+        if not os.path.exists(os.path.join(case_dir, mesh)):
             blocks, sets = mesh_names(deck)
             os.makedirs(os.path.dirname(target) or '.', exist_ok=True)
             write_substitute_exodus(target, blocks, sets, find_horizon(deck) / 3.015)
             note = 'substitute mesh'
     if disc.get('Type') == 'Text File' and mesh:
         target = os.path.join(dest, mesh)
-        if not os.path.exists(target):
+        if not os.path.exists(os.path.join(case_dir, mesh)):
             blocks, _ = mesh_names(deck)
             os.makedirs(os.path.dirname(target) or '.', exist_ok=True)
             write_substitute_text(target, blocks, find_horizon(deck) / 3.015)
@@ -311,14 +311,14 @@ def prepare(deck_path, work):
     for k, v in flat(deck):
         if k.endswith('/File Name') and 'Bond Filters/' in k:
             target = os.path.join(dest, v)
-            if not os.path.exists(target):
+            if not os.path.exists(os.path.join(case_dir, v)):
                 write_substitute_shell(target, find_horizon(deck) / 3.015)
                 note = 'substitute mesh'
     # node sets read from files ('Node Set Top: ../nodelist_2.csv'): a two-point substitute
     for k, v in deck.get('Boundary Conditions', {}).items():
         if isinstance(v, str) and re.search(r'\.(csv|txt|dat)$', v.strip()):
             target = os.path.join(dest, v.strip())
-            if not os.path.exists(target):
+            if not os.path.exists(os.path.join(case_dir, v.strip())):
                 os.makedirs(os.path.dirname(target) or '.', exist_ok=True)
                 with open(target, 'w') as f:
                     f.write('1\n2\n')
