@@ -91,9 +91,8 @@ def summary(deck):
     bcs = deck.get('Boundary Conditions', {})
     types = sorted({v.get('Type') for v in bcs.values() if isinstance(v, dict) and v.get('Type')})
     feats += types
-    for k in bcs:
-        if not isinstance(bcs[k], dict) and k not in ('',):
-            feats.append('BC:' + k)
+    if any(not isinstance(v, dict) for v in bcs.values()):
+        feats.append('node sets in the deck')
     return ', '.join(solver) or '-', ', '.join(mats) or '-', ', '.join(dmg) or '-', feats
 
 
