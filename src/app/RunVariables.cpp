@@ -43,6 +43,7 @@ std::string RunVariables::globalComponentName(const std::string& name, int d) co
 void RunVariables::nodeVariable(const std::string& name, std::vector<double>& out) {
   const int n = s_.topology->numOwned;
   const int c = components(name);
+  int component = 0;
   out.assign(static_cast<std::size_t>(n) * c, 0.0);
   auto copy = [&](const double* src) {
     std::copy(src, src + static_cast<std::size_t>(n) * c, out.begin());
@@ -99,12 +100,11 @@ void RunVariables::nodeVariable(const std::string& name, std::vector<double>& ou
              name.find("_Normalization") != std::string::npos) {
     // Fields of a material or damage model (Pals, Interface Aware): 0 at points without one.
     if (s_.fields->hasNode(name)) copy(s_.fields->node(name, 1));
-  } else if (name.size() == 22 && name.compare(0, 20, "Deformation_Gradient") == 0) {
-    // One component (Peridigm's compute output): row and column from the suffix.
+  } else if (std::string tensor; c == 1 && tensorComponent(name, tensor, component)) {
+    // One component of a full tensor (Peridigm's scalar fields <tensor>XX ... ZZ).
     std::vector<double> full;
-    nodeVariable("Deformation_Gradient", full);
-    const int k = 3 * (name[20] - 'X') + (name[21] - 'X');
-    for (int i = 0; i < n; ++i) out[i] = full[9 * static_cast<std::size_t>(i) + k];
+    nodeVariable(tensor, full);
+    for (int i = 0; i < n; ++i) out[i] = full[9 * static_cast<std::size_t>(i) + component];
   } else if (name == "Deformation_Gradient") {
     // The correspondence models' own F (with bond damage); elsewhere Peridigm's compute:
     // F = N K^-1 from the current positions, zero where the shape tensor is singular.

@@ -263,8 +263,27 @@ ComputeConfig readCompute(ListReader c, const std::string& name) {
 
 }  // namespace
 
+namespace {
+
+// Each full tensor is also known by its nine components <name>XX, XY, ..., ZZ: Peridigm
+// registers the tensors of its correspondence models (and of the Deformation_Gradient compute)
+// as nine scalar element fields, and its decks ask for them by these names.
+std::vector<VariableInfo> withTensorComponents(std::vector<VariableInfo> vars) {
+  const std::size_t n = vars.size();
+  for (std::size_t v = 0; v < n; ++v) {
+    if (vars[v].components != 9) continue;
+    for (const char* suffix : kTensorComponentSuffixes) {
+      vars.push_back(
+          {vars[v].name + suffix, 1, std::string("component ") + suffix + " of " + vars[v].name});
+    }
+  }
+  return vars;
+}
+
+}  // namespace
+
 const std::vector<VariableInfo>& knownOutputVariables() {
-  static const std::vector<VariableInfo> vars = {
+  static const std::vector<VariableInfo> vars = withTensorComponents({
       {"Volume", 1, "point volume"},
       {"Block_Id", 1, "block id of the point"},
       {"Element_Id", 1, "global point id (Exodus element id)"},
@@ -290,16 +309,6 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Deformation_Gradient", 9,
        "deformation gradient F (correspondence models; for other models F = N K^-1 from the "
        "current positions, without bond damage, as Peridigm's compute)"},
-      // Peridigm's Deformation_Gradient compute registers the components as scalars.
-      {"Deformation_GradientXX", 1, "component XX of Deformation_Gradient"},
-      {"Deformation_GradientXY", 1, "component XY of Deformation_Gradient"},
-      {"Deformation_GradientXZ", 1, "component XZ of Deformation_Gradient"},
-      {"Deformation_GradientYX", 1, "component YX of Deformation_Gradient"},
-      {"Deformation_GradientYY", 1, "component YY of Deformation_Gradient"},
-      {"Deformation_GradientYZ", 1, "component YZ of Deformation_Gradient"},
-      {"Deformation_GradientZX", 1, "component ZX of Deformation_Gradient"},
-      {"Deformation_GradientZY", 1, "component ZY of Deformation_Gradient"},
-      {"Deformation_GradientZZ", 1, "component ZZ of Deformation_Gradient"},
       {"Partial_Stress", 9,
        "Peridigm's partial stress of an \"Elastic\" block with Compute Partial Stress: sum of "
        "the point's own pair forces (x) xi V_j"},
@@ -370,8 +379,19 @@ const std::vector<VariableInfo>& knownOutputVariables() {
       {"Lagrange_Multiplier_Deviatoric_6", 1, "Pals: deviatoric multiplier (yz)"},
       {"Critical_Stretch", 1,
        "Interface Aware damage: critical stretch of the point (0 elsewhere)"},
-  };
+  });
   return vars;
+}
+
+bool tensorComponent(const std::string& name, std::string& tensor, int& component) {
+  if (name.size() < 3) return false;
+  const char row = name[name.size() - 2], column = name[name.size() - 1];
+  if (row < 'X' || row > 'Z' || column < 'X' || column > 'Z') return false;
+  const VariableInfo* base = findOutputVariable(name.substr(0, name.size() - 2));
+  if (!base || base->components != 9) return false;
+  tensor = base->name;
+  component = 3 * (row - 'X') + (column - 'X');
+  return true;
 }
 
 const VariableInfo* findOutputVariable(const std::string& name) {
@@ -476,6 +496,19 @@ RunConfig readRunConfig(const Teuchos::ParameterList& deck) {
                      "meshfree discretization of local continuum mechanics, not peridynamics) is "
                      "not supported by Peridot");
   }
+  // Peridigm's first deck layout (before Materials and Blocks existed) nested Discretization,
+  // Material and Boundary Conditions in a Problem list; refused by name, not as a missing list.
+  if (top.has("Problem")) {
+    throw InputError("Problem",
+                     "the old Peridigm deck layout (Discretization, Material and Boundary "
+                     "Conditions inside a \"Problem\" list, the horizon in Discretization, "
+                     "\"Material Output Fields\") is not supported; Peridot reads the current "
+                     "one: Discretization, Materials, Blocks (with each block's Horizon) and "
+                     "Boundary Conditions at the top level");
+  }
+  // Peridigm allocates the hypoelastic models' extra fields only when this is true; Peridot's
+  // hypoelastic models always have them, so the switch changes nothing.
+  top.boolean("Enable Bond-Associated Hypoelastic Model", false);
   config.discretization = readDiscretizationConfig(top.sublist("Discretization"));
 
   ListReader materials = top.sublist("Materials");

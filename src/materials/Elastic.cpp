@@ -34,6 +34,9 @@ Elastic::Elastic(ListReader& p) {
   mode_ = readPlaneMode(p);
   constants_ = readTwoElasticConstants(p);
   shearCorrection_ = p.boolean("Apply Shear Correction Factor", false);
+  // Peridigm reads the hourglass coefficient only in its correspondence models; decks that
+  // share one material block between model kinds carry it on LPS too.
+  if (p.has("Hourglass Coefficient")) p.nonNegativeNumber("Hourglass Coefficient", 0.0);
   thermalExpansion_ = p.number("Thermal Expansion Coefficient", 0.0);
   if (mode_ != PlaneMode::ThreeD) {
     // The dilatation is the 3D volumetric strain (Le, Chan and Schwartz 2014): in plane stress
@@ -441,6 +444,8 @@ PERIDOT_REGISTER_MATERIAL(
          "bool, default false: true maintains Peridigm's partial stress, sum over the point's "
          "bonds of its own pair force t Y/|Y| (x) xi V_j, as the output Partial_Stress"},
         {"Finite Difference Probe Length",
-         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"},
+        {"Hourglass Coefficient",
+         "number >= 0: accepted and ignored (Peridigm reads it only in correspondence models)"}}))
 
 }  // namespace peridot

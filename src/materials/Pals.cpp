@@ -70,6 +70,9 @@ Pals::Pals(ListReader& p) {
   constants_ = readTwoElasticConstants(p);
   dilatationKernel_ = readKernel(p, "Dilatation Influence Function");
   deviatoricKernel_ = readKernel(p, "Deviatoric Influence Function");
+  // Peridigm reads the hourglass coefficient only in its correspondence models (Peridigm's
+  // Interface Aware decks carry one on Pals).
+  if (p.has("Hourglass Coefficient")) p.nonNegativeNumber("Hourglass Coefficient", 0.0);
   acceptCommonMaterialKeys(p);
 }
 
@@ -464,6 +467,8 @@ PERIDOT_REGISTER_MATERIAL(
          "function of the deviatoric energy"},
         {"Apply Automatic Differentiation Jacobian", "bool: accepted; the tangent is analytic"},
         {"Finite Difference Probe Length",
-         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"}}))
+         "positive number: accepted; the probe is Solver -> Finite Difference Probe Length"},
+        {"Hourglass Coefficient",
+         "number >= 0: accepted and ignored (Peridigm reads it only in correspondence models)"}}))
 
 }  // namespace peridot

@@ -120,6 +120,10 @@ peridot_baddeck(bond_filters_pdquickgrid DECK bond_filters_pdquickgrid.yaml
   EXPECT [[Discretization -> Bond Filters: bond filters are not available with PdQuickGrid]])
 peridot_baddeck(horizon_in_discretization DECK horizon_in_discretization.yaml
   EXPECT [[Discretization -> Horizon: the horizon belongs in the Blocks section]])
+# Peridigm's first deck layout: named as such (it used to fail as "Discretization: required list
+# is missing", which does not say why).
+peridot_baddeck(old_problem_layout DECK old_problem_layout.xml
+  EXPECT [[Problem: the old Peridigm deck layout]] ALSO [[is not supported]])
 
 # ---- vocabulary and types ----
 peridot_baddeck(unknown_top_level_key DECK unknown_top_level_key.yaml
