@@ -21,23 +21,33 @@ void LSJT::bind(const MaterialModel& material, double horizon, const std::string
   criticalStretch_.bind(material, horizon, blockName, log);
 }
 
-void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
-  std::vector<double>& history = s.fields->bond(kHistoryIntegral);
+LsjtStep LSJT::beginLsjtStep(const ModelState& s) {
+  LsjtStep k;
+  // The history field exists from the first evaluation on (a checkpoint saves it).
+  double* history = s.fields->bond(kHistoryIntegral).data();
   // The first evaluation is the initial state at t0: the integral over [t0, t0] is zero. Each
   // later one closes a step [t_{n-1}, t_n] with the rate at its end (the current stretch).
   // A trial evaluation (ModelState::commitHistory false) takes the integral to its state
   // without storing it: every trial of a step starts from the integral at the step's start.
   const double dt = started_ ? s.dt : 0.0;
   if (s.commitHistory) started_ = true;
-  if (dt == 0.0) return;
-  const double sc = criticalStretch_.value();
-  const double xc = lsjtOverstretchRate(1.05 * sc, sc) * s.dt;
+  if (dt == 0.0) return k;  // inactive: nothing accumulates
+  k.historyIntegral = history;
+  k.dt = dt;
+  k.criticalStretch = criticalStretch_.value();
+  k.xc = lsjtOverstretchRate(1.05 * k.criticalStretch, k.criticalStretch) * s.dt;
+  k.commit = s.commitHistory;
+  return k;
+}
+
+void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
+  const LsjtStep k = beginLsjtStep(s);
+  if (!k.active()) return;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* x = s.x;
   const double* y = s.y;
   const double* zeta = s.bondLength;
-  double* X = history.data();
   for (int i : points) {
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
@@ -49,12 +59,7 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
         const double eta = (y[3 * j + d] - y[3 * i + d]) - xi;
         dot += xi * eta;
       }
-      const double eps = dot / (zeta[b] * zeta[b]);
-      if (!(eps >= sc)) continue;  // j_s = 0: nothing accumulates (the common case)
-      const double integral = X[b] + dt * lsjtOverstretchRate(eps, sc);
-      if (s.commitHistory) X[b] = integral;
-      const float broken = static_cast<float>(1.0 - lsjtDamageFactor(integral, xc));
-      bondDamage[b] = std::max(bondDamage[b], broken);
+      lsjtUpdateBond(k, b, dot / (zeta[b] * zeta[b]), bondDamage);
     }
   }
 }

@@ -1,5 +1,8 @@
 #include "materials/LinearizedLPS.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/Error.hpp"
 
 namespace peridot {
@@ -62,15 +65,36 @@ void LinearizedLPS::initialize(const ModelState& s, const std::vector<int>& poin
 }
 
 void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& points) {
+  // The block's damage, when the evaluator fuses it here (breaksInPrecompute): LSJ-T's update
+  // (its first evaluation updates nothing: inactive) or DTT's broken fraction.
+  if (s.fusedLsjt.active())
+    dilatationLoop<Fused::Lsjt>(s, points);
+  else if (s.breakableBondDamage && s.bondLaw.kind == BondLaw::Kind::Smooth)
+    dilatationLoop<Fused::Dtt>(s, points);
+  else
+    dilatationLoop<Fused::None>(s, points);
+}
+
+// theta_i = (kappa / m_i) sum_j omega mu xi.eta V_j over the bonds in i's own horizon. With
+// kFused the loop first updates the damage of every bond entry of i (one-sided ones too: the
+// force reads them) exactly as the separate damage pass does (damage/LSJT.cpp, damage/DTT.cpp):
+// the same strain arithmetic, the same per-bond function, so the same bits, and that pass's walk
+// over the bonds is saved. LSJ-T's strain xi.eta / |xi|^2 shares xi.eta with the dilatation.
+template <LinearizedLPS::Fused kFused>
+void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* x = s.x;
   const double* y = s.y;
+  const double* zeta = s.bondLength;
+  const LsjtStep lsjt = s.fusedLsjt;
+  const BondLaw law = s.bondLaw;
+  float* breakable = s.breakableBondDamage;
+  const float* damage = kFused == Fused::None ? s.bondDamage : breakable;
   for (int i : points) {
     const double m = weightedVolume_[i];
     double sum = 0;
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      if (!s.topology->ownSide(b)) continue;
       const int j = neighbors[b];
       // omega |xi|^2 eps = omega xi.eta
       double dot = 0;
@@ -78,8 +102,19 @@ void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& poin
         const double xi = x[3 * j + d] - x[3 * i + d];
         dot += xi * ((y[3 * j + d] - y[3 * i + d]) - xi);
       }
+      if constexpr (kFused == Fused::Lsjt) {
+        lsjtUpdateBond(lsjt, b, dot / (zeta[b] * zeta[b]), breakable);
+      } else if constexpr (kFused == Fused::Dtt) {
+        // DTT's stretch is the true one, (|Y| - |xi|) / |xi|.
+        const double Y0 = y[3 * j] - y[3 * i], Y1 = y[3 * j + 1] - y[3 * i + 1],
+                     Y2 = y[3 * j + 2] - y[3 * i + 2];
+        const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
+        const float broken = static_cast<float>(law.brokenFraction(stretch));
+        breakable[b] = std::max(breakable[b], broken);
+      }
+      if (!s.topology->ownSide(b)) continue;
       const double omega = s.influence ? s.influence[b] : 1.0;
-      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
+      const double mu = damage ? 1.0 - damage[b] : 1.0;
       sum += omega * mu * dot * s.volume[j];
     }
     dilatation_[i] = m > 0 ? kappa_ * sum / m : 0.0;
