@@ -44,23 +44,16 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
   const LsjtStep k = beginLsjtStep(s);
   if (!k.active()) return;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* x = s.x;
-  const double* y = s.y;
-  const double* zeta = s.bondLength;
+  std::int64_t family = 0;
+  for (int i : points) family = std::max(family, offsets[i + 1] - offsets[i]);
+  scratch_.resize(3 * static_cast<std::size_t>(family));
+  double* dot = scratch_.data();
+  double* eps = dot + family;
+  double* integral = eps + family;
   for (int i : points) {
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      // Linearized strain xi.eta/|xi|^2; the same bits from both ends (every difference flips
-      // sign exactly and the products do not change).
-      double dot = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double xi = x[3 * j + d] - x[3 * i + d];
-        const double eta = (y[3 * j + d] - y[3 * i + d]) - xi;
-        dot += xi * eta;
-      }
-      lsjtUpdateBond(k, b, dot / (zeta[b] * zeta[b]), bondDamage);
-    }
+    lsjtStrains(s.x, s.y, s.topology->neighbors.data(), s.bondLength, i, offsets[i], offsets[i + 1],
+                dot, eps);
+    lsjtUpdateBonds(k, offsets[i], offsets[i + 1], eps, integral, bondDamage);
   }
 }
 

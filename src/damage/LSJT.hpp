@@ -37,6 +37,7 @@ class LSJT : public DamageModel {
  private:
   CriticalStretchInput criticalStretch_;
   bool started_ = false;
+  std::vector<double> scratch_;  // one point's strains and integrals (3 x its bond count)
 };
 
 }  // namespace peridot
