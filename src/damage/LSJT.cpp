@@ -51,9 +51,9 @@ void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, fl
   double* eps = dot + family;
   double* integral = eps + family;
   for (int i : points) {
-    lsjtStrains(s.x, s.y, s.topology->neighbors.data(), s.bondLength, i, offsets[i], offsets[i + 1],
-                dot, eps);
-    lsjtUpdateBonds(k, offsets[i], offsets[i + 1], eps, integral, bondDamage);
+    if (lsjtStrains(s.x, s.y, s.topology->neighbors.data(), s.bondLength, i, offsets[i],
+                    offsets[i + 1], dot, eps, k.criticalStretch))
+      lsjtUpdateBonds(k, offsets[i], offsets[i + 1], eps, integral, bondDamage);
   }
 }
 

@@ -34,12 +34,14 @@ struct LsjtStep {
 
 // The linearized strains of bond entries b0 .. b1 of point i: dot[k] = xi.eta, eps[k] =
 // xi.eta / |xi|^2 for entry b0 + k (xi = x_j - x_i, eta = (y_j - y_i) - xi; the same bits from
-// both ends of a bond). A loop without branches: it vectorizes.
-inline void lsjtStrains(const double* x, const double* y, const int* neighbors, const double* zeta,
-                        int i, std::int64_t b0, std::int64_t b1, double* __restrict dot,
-                        double* __restrict eps) {
+// both ends of a bond). Returns whether some eps >= S_c: if none, the update changes nothing and
+// may be skipped (most points of most steps). A loop without branches: it vectorizes.
+inline int lsjtStrains(const double* x, const double* y, const int* neighbors, const double* zeta,
+                       int i, std::int64_t b0, std::int64_t b1, double* __restrict dot,
+                       double* __restrict eps, double criticalStretch) {
   const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
   const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  int over = 0;  // an int: a bool reduction stops GCC vectorizing the loop
   for (std::int64_t b = b0; b < b1; ++b) {
     const int j = neighbors[b];
     const double X0 = x[3 * j] - xi0, X1 = x[3 * j + 1] - xi1, X2 = x[3 * j + 2] - xi2;
@@ -49,7 +51,9 @@ inline void lsjtStrains(const double* x, const double* y, const int* neighbors, 
     d += X2 * ((y[3 * j + 2] - yi2) - X2);
     dot[b - b0] = d;
     eps[b - b0] = d / (zeta[b] * zeta[b]);
+    over |= eps[b - b0] >= criticalStretch ? 1 : 0;
   }
+  return over;
 }
 
 // The update of bond entries b0 .. b1 (one point's) from their strains eps[0 .. b1 - b0): where

@@ -102,8 +102,8 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
   for (int i : points) {
     const std::int64_t b0 = offsets[i], b1 = offsets[i + 1];
     if constexpr (kFused == Fused::Lsjt) {
-      lsjtStrains(x, y, neighbors, s.bondLength, i, b0, b1, dot, eps);
-      lsjtUpdateBonds(lsjt, b0, b1, eps, integral, breakable);
+      if (lsjtStrains(x, y, neighbors, s.bondLength, i, b0, b1, dot, eps, lsjt.criticalStretch))
+        lsjtUpdateBonds(lsjt, b0, b1, eps, integral, breakable);
     } else if constexpr (kFused == Fused::Dtt) {
       raiseBrokenFractions(s.bondLaw, y, neighbors, s.bondLength, i, b0, b1, breakable);
     }
