@@ -41,7 +41,8 @@ class DamageModel {
   virtual bool fusesIntoLinearizedStrain() const { return false; }
   // For such a model, in place of computeDamage: what it does before its walk over the bonds
   // (the first evaluation starts its clock) and the data of this evaluation's update, which the
-  // material's loop applies with lsjtUpdateBond. Called once per evaluation that updates damage.
+  // material's loop applies with lsjtStrains / lsjtUpdateBonds. Called once per evaluation that
+  // updates damage.
   virtual LsjtStep beginLsjtStep(const ModelState& /*state*/) { return LsjtStep(); }
   // Whether computeDamage reads ModelState::bondLength (stored only if some model asks for it;
   // a model that returns false computes |xi| with referenceBondLength()).

@@ -1,8 +1,8 @@
 #pragma once
 // One step of LSJ-T's bond update (paper 001, eqs. 19-20; damage/LSJT.hpp), as plain data and
-// one inline function per bond: LSJ-T's own damage pass and a material loop that forms the same
-// linearized strain (Linearized LPS's dilatation loop, fused) both apply lsjtUpdateBond, so the
-// two give the same bits.
+// two inline functions over one point's bonds: LSJ-T's own damage pass and a material loop that
+// forms the same linearized strain (Linearized LPS's dilatation loop, fused) both call
+// lsjtStrains and lsjtUpdateBonds, so the two give the same bits.
 #include <algorithm>
 #include <cstdint>
 

@@ -207,8 +207,8 @@ class MaterialModel {
   // in its computeForce bond loop, the same bits as the separate pass (float bond damage).
   virtual bool fusesSmoothBreak() const { return false; }
   // Whether the model can apply LSJ-T's update (DamageModel::fusesIntoLinearizedStrain,
-  // ModelState::fusedLsjt) in its precompute bond loop, which must form the linearized strain
-  // with LSJ-T's arithmetic: the same bits as the separate pass (float bond damage).
+  // ModelState::fusedLsjt) in its precompute bond loop, with LSJ-T's own per-point functions
+  // (damage/LsjtStep.hpp): the same bits as the separate pass (float bond damage).
   virtual bool fusesLsjtUpdate() const { return false; }
   // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
   // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
