@@ -5,6 +5,10 @@
 //   Smooth: Du, Tao and Tian's (paper 002, eq. 5) continuous piecewise-linear F(s), with
 //           thresholds S1- < S0- < 0 <= S0+ < S1+; the stored energy uses p(s), p' = F, p(0) = 0.
 // The damage factor mu(S*) itself travels in the bond damage (1 - mu).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
 namespace peridot {
 
 struct BondLaw {
@@ -47,5 +51,24 @@ struct BondLaw {
                (2.0 * w);
   }
 };
+
+// A Smooth law's damage update (DTT's pass) of bond entries b0 .. b1 of point i: the bond damage
+// becomes max(d, brokenFraction(s)), s = (|Y| - |xi|) / |xi|. DTT's own pass and Linearized LPS's
+// dilatation loop (fused) both call it; without branches, it vectorizes.
+inline void raiseBrokenFractions(const BondLaw& law, const double* y, const int* neighbors,
+                                 const double* zeta, int i, std::int64_t b0, std::int64_t b1,
+                                 float* bondDamage) {
+  const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  for (std::int64_t b = b0; b < b1; ++b) {
+    const int j = neighbors[b];
+    // Both ends of a bond form the same stretch bit for bit: y_i - y_j = -(y_j - y_i)
+    // exactly, and the squares and the reference length are the same.
+    const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+    const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
+    // 1 - mu(S*) = max over the history of 1 - mu(s); rounding to float is monotone too.
+    const float broken = static_cast<float>(law.brokenFraction(stretch));
+    bondDamage[b] = std::max(bondDamage[b], broken);
+  }
+}
 
 }  // namespace peridot

@@ -59,24 +59,11 @@ BondLaw DTT::bondLaw() const {
 
 void DTT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* y = s.y;
-  const double* zeta = s.bondLength;
-  // The law the fused pair loops apply (BondLaw::brokenFraction): one definition for both.
+  // The law the fused loops apply (BondLaw::brokenFraction): one definition for both.
   const BondLaw law = bondLaw();
-  for (int i : points) {
-    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      // Both ends of a bond form the same stretch bit for bit: y_i - y_j = -(y_j - y_i)
-      // exactly, and the squares and the reference length are the same.
-      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      const double stretch = (std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2) - zeta[b]) / zeta[b];
-      // 1 - mu(S*) = max over the history of 1 - mu(s); rounding to float is monotone too.
-      const float broken = static_cast<float>(law.brokenFraction(stretch));
-      bondDamage[b] = std::max(bondDamage[b], broken);
-    }
-  }
+  for (int i : points)
+    raiseBrokenFractions(law, s.y, s.topology->neighbors.data(), s.bondLength, i, offsets[i],
+                         offsets[i + 1], bondDamage);
 }
 
 PERIDOT_REGISTER_DAMAGE(

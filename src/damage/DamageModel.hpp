@@ -35,6 +35,15 @@ class DamageModel {
   // brokenFraction(stretch)" (DTT): a material that applies the smooth law in its force loop
   // may then replace computeDamage (MaterialModel::fusesSmoothBreak).
   virtual bool fusesIntoSmoothBondLaw() const { return false; }
+  // Whether the model is LSJ-T's update of each bond's history integral from its linearized
+  // strain (damage/LsjtStep.hpp): a material whose first bond loop forms that strain may then
+  // apply it there (MaterialModel::fusesLsjtUpdate) in place of computeDamage.
+  virtual bool fusesIntoLinearizedStrain() const { return false; }
+  // For such a model, in place of computeDamage: what it does before its walk over the bonds
+  // (the first evaluation starts its clock) and the data of this evaluation's update, which the
+  // material's loop applies with lsjtStrains / lsjtUpdateBonds. Called once per evaluation that
+  // updates damage.
+  virtual LsjtStep beginLsjtStep(const ModelState& /*state*/) { return LsjtStep(); }
   // Whether computeDamage reads ModelState::bondLength (stored only if some model asks for it;
   // a model that returns false computes |xi| with referenceBondLength()).
   virtual bool needsBondLength() const { return true; }

@@ -21,41 +21,39 @@ void LSJT::bind(const MaterialModel& material, double horizon, const std::string
   criticalStretch_.bind(material, horizon, blockName, log);
 }
 
-void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
-  std::vector<double>& history = s.fields->bond(kHistoryIntegral);
+LsjtStep LSJT::beginLsjtStep(const ModelState& s) {
+  LsjtStep k;
+  // The history field exists from the first evaluation on (a checkpoint saves it).
+  double* history = s.fields->bond(kHistoryIntegral).data();
   // The first evaluation is the initial state at t0: the integral over [t0, t0] is zero. Each
   // later one closes a step [t_{n-1}, t_n] with the rate at its end (the current stretch).
   // A trial evaluation (ModelState::commitHistory false) takes the integral to its state
   // without storing it: every trial of a step starts from the integral at the step's start.
   const double dt = started_ ? s.dt : 0.0;
   if (s.commitHistory) started_ = true;
-  if (dt == 0.0) return;
-  const double sc = criticalStretch_.value();
-  const double xc = lsjtOverstretchRate(1.05 * sc, sc) * s.dt;
+  if (dt == 0.0) return k;  // inactive: nothing accumulates
+  k.historyIntegral = history;
+  k.dt = dt;
+  k.criticalStretch = criticalStretch_.value();
+  k.xc = lsjtOverstretchRate(1.05 * k.criticalStretch, k.criticalStretch) * s.dt;
+  k.commit = s.commitHistory;
+  return k;
+}
+
+void LSJT::computeDamage(const ModelState& s, const std::vector<int>& points, float* bondDamage) {
+  const LsjtStep k = beginLsjtStep(s);
+  if (!k.active()) return;
   const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* x = s.x;
-  const double* y = s.y;
-  const double* zeta = s.bondLength;
-  double* X = history.data();
+  std::int64_t family = 0;
+  for (int i : points) family = std::max(family, offsets[i + 1] - offsets[i]);
+  scratch_.resize(3 * static_cast<std::size_t>(family));
+  double* dot = scratch_.data();
+  double* eps = dot + family;
+  double* integral = eps + family;
   for (int i : points) {
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      // Linearized strain xi.eta/|xi|^2; the same bits from both ends (every difference flips
-      // sign exactly and the products do not change).
-      double dot = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double xi = x[3 * j + d] - x[3 * i + d];
-        const double eta = (y[3 * j + d] - y[3 * i + d]) - xi;
-        dot += xi * eta;
-      }
-      const double eps = dot / (zeta[b] * zeta[b]);
-      if (!(eps >= sc)) continue;  // j_s = 0: nothing accumulates (the common case)
-      const double integral = X[b] + dt * lsjtOverstretchRate(eps, sc);
-      if (s.commitHistory) X[b] = integral;
-      const float broken = static_cast<float>(1.0 - lsjtDamageFactor(integral, xc));
-      bondDamage[b] = std::max(bondDamage[b], broken);
-    }
+    if (lsjtStrains(s.x, s.y, s.topology->neighbors.data(), s.bondLength, i, offsets[i],
+                    offsets[i + 1], dot, eps, k.criticalStretch))
+      lsjtUpdateBonds(k, offsets[i], offsets[i + 1], eps, integral, bondDamage);
   }
 }
 

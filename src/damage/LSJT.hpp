@@ -10,19 +10,9 @@
 // holds 1 - mu~. Used with the "Linearized LPS" material this is paper 001's LSJ-T model.
 #include "damage/DamageModel.hpp"
 #include "damage/FractureEnergy.hpp"
+#include "damage/LsjtStep.hpp"
 
 namespace peridot {
-
-// j_s of paper 001 eq. 20.
-inline double lsjtOverstretchRate(double x, double criticalStretch) {
-  if (!(x >= criticalStretch)) return 0.0;
-  const double r = x / criticalStretch, a = r - 1.0;
-  const double a2 = a * a, r2 = r * r;
-  return a2 * a2 * a / (1.0 + r2 * r2 * r);
-}
-
-// h of paper 001 eq. 20.
-double lsjtDamageFactor(double integral, double xc);
 
 class LSJT : public DamageModel {
  public:
@@ -37,12 +27,17 @@ class LSJT : public DamageModel {
   double criticalStretch() const { return criticalStretch_.value(); }
   void resume() override { started_ = true; }
   bool integratesInTime() const override { return true; }
+  // Linearized LPS's dilatation loop forms the same linearized strain: it may apply the update
+  // there (one walk over the bonds less), the same bits as computeDamage.
+  bool fusesIntoLinearizedStrain() const override { return true; }
+  LsjtStep beginLsjtStep(const ModelState& state) override;
 
   static constexpr const char* kHistoryIntegral = "LSJT_History_Integral";
 
  private:
   CriticalStretchInput criticalStretch_;
   bool started_ = false;
+  std::vector<double> scratch_;  // one point's strains and integrals (3 x its bond count)
 };
 
 }  // namespace peridot

@@ -252,18 +252,20 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
     for (auto& b : blocks_)
       if (b.damage && !fusesDamage(b)) b.damage->computeDamage(state_, b.points, bondDamage_);
   }
-  // A fused critical stretch is handed to the block's first bond loop: precompute for a model
-  // that breaks there (its dilatation must see this step's breaks), else computeForce; a fused
-  // smooth law's damage (DTT) to computeForce, with fusedCriticalStretch 0. Each point's loops
-  // read only its own bonds' damage, so the same bonds break as in the pass above.
+  // A fused damage update is handed to the block's first bond loop: precompute for a model that
+  // breaks there (its dilatation must see this step's breaks), else computeForce. A fused
+  // critical stretch comes as fusedCriticalStretch, a smooth law's damage (DTT) with
+  // fusedCriticalStretch 0, LSJ-T's update as fusedLsjt (started here, once per evaluation, as
+  // its computeDamage would be). Each point's loops read only its own bonds' damage, so the same
+  // bonds break as in the pass above.
   const auto breakable = [&](const Block& b, bool inPrecompute) {
-    const bool inLoop =
-        fusesCriticalStretch(b) ? b.material->breaksInPrecompute() == inPrecompute : !inPrecompute;
+    const bool inLoop = b.material->breaksInPrecompute() == inPrecompute;
     const bool fused = updateDamage && fusesDamage(b) && inLoop;
     state_.breakableBondDamage = fused ? bondDamage_ : nullptr;
     state_.breakableBondBroken = fused ? bondBroken_ : nullptr;
     state_.fusedCriticalStretch =
         fused && fusesCriticalStretch(b) ? b.damage->fusableCriticalStretch() : 0.0;
+    state_.fusedLsjt = fused && fusesLsjt(b) ? b.damage->beginLsjtStep(state_) : LsjtStep();
   };
   bool precompute = !syncAfterPrecompute_.empty();
   for (const auto& b : blocks_) precompute = precompute || b.material->breaksInPrecompute();
@@ -288,6 +290,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
   state_.breakableBondDamage = nullptr;
   state_.breakableBondBroken = nullptr;
   state_.fusedCriticalStretch = 0.0;
+  state_.fusedLsjt = LsjtStep();
   state_.commitHistory = true;
 }
 
@@ -306,8 +309,15 @@ bool ModelEvaluator::fusesSmoothBreak(const Block& b) const {
          b.damage->bondLaw().kind == BondLaw::Kind::Smooth && b.material->fusesSmoothBreak();
 }
 
+bool ModelEvaluator::fusesLsjt(const Block& b) const {
+  // In the precompute loop only: the dilatation must see this step's damage. Float bond damage
+  // (compact damage never comes with it).
+  return fuseCriticalStretch_ && b.damage && b.damage->fusesIntoLinearizedStrain() &&
+         b.material->fusesLsjtUpdate() && b.material->breaksInPrecompute();
+}
+
 bool ModelEvaluator::fusesDamage(const Block& b) const {
-  return fusesCriticalStretch(b) || fusesSmoothBreak(b);
+  return fusesCriticalStretch(b) || fusesSmoothBreak(b) || fusesLsjt(b);
 }
 
 void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {

@@ -22,9 +22,9 @@ class ModelEvaluator {
     state_.dimension = 2;
     state_.thickness = thickness;
   }
-  // Whether blocks with "Critical Stretch" (and bond-based blocks with "DTT") update their bond
-  // damage inside the material's bond loop (default) or in a separate damage pass; both give the
-  // same bits (bench_roofline measures).
+  // Whether blocks with "Critical Stretch" (bond-based and Linearized LPS blocks with "DTT",
+  // Linearized LPS blocks with "LSJ-T") update their bond damage inside the material's bond loop
+  // (default) or in a separate damage pass; both give the same bits (bench_roofline measures).
   void setFuseCriticalStretch(bool fuse) { fuseCriticalStretch_ = fuse; }
   // Allows compact bond damage (1-byte broken flags, ModelState::bondBroken) when every damage
   // model is a fused critical stretch and every material reads the flags. Off by default: the
@@ -92,6 +92,7 @@ class ModelEvaluator {
   ModelState state_;
   bool fusesCriticalStretch(const Block& b) const;
   bool fusesSmoothBreak(const Block& b) const;
+  bool fusesLsjt(const Block& b) const;
   // Whether the block's damage runs inside its material's bond loops instead of its own pass.
   bool fusesDamage(const Block& b) const;
 

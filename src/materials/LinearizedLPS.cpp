@@ -1,5 +1,8 @@
 #include "materials/LinearizedLPS.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/Error.hpp"
 
 namespace peridot {
@@ -62,25 +65,67 @@ void LinearizedLPS::initialize(const ModelState& s, const std::vector<int>& poin
 }
 
 void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& points) {
+  // The block's damage, when the evaluator fuses it here (breaksInPrecompute): LSJ-T's update
+  // (its first evaluation updates nothing: inactive) or DTT's broken fraction.
+  if (s.fusedLsjt.active())
+    dilatationLoop<Fused::Lsjt>(s, points);
+  else if (s.breakableBondDamage && s.bondLaw.kind == BondLaw::Kind::Smooth)
+    dilatationLoop<Fused::Dtt>(s, points);
+  else
+    dilatationLoop<Fused::None>(s, points);
+}
+
+// theta_i = (kappa / m_i) sum_j omega mu xi.eta V_j over the bonds in i's own horizon. With
+// kFused the loop first updates the damage of every bond entry of i (one-sided ones too: the
+// force reads them) with the very functions of the separate damage pass (LSJ-T's
+// lsjtStrains / lsjtUpdateBonds, DTT's raiseBrokenFractions), so the same bits, and that pass's
+// walk over the bond arrays is saved: the sum reads i's entries again from the cache. The update
+// loops vectorize; the sum keeps its order (the bits of the dilatation) and does not.
+template <LinearizedLPS::Fused kFused>
+void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
   const double* x = s.x;
   const double* y = s.y;
+  const LsjtStep lsjt = s.fusedLsjt;
+  float* breakable = s.breakableBondDamage;
+  const float* damage = kFused == Fused::None ? s.bondDamage : breakable;
+  double *dot = nullptr, *eps = nullptr, *integral = nullptr;
+  if constexpr (kFused == Fused::Lsjt) {
+    std::int64_t family = 0;
+    for (int i : points) family = std::max(family, offsets[i + 1] - offsets[i]);
+    scratch_.resize(3 * static_cast<std::size_t>(family));
+    dot = scratch_.data();
+    eps = dot + family;
+    integral = eps + family;
+  }
   for (int i : points) {
+    const std::int64_t b0 = offsets[i], b1 = offsets[i + 1];
+    if constexpr (kFused == Fused::Lsjt) {
+      if (lsjtStrains(x, y, neighbors, s.bondLength, i, b0, b1, dot, eps, lsjt.criticalStretch))
+        lsjtUpdateBonds(lsjt, b0, b1, eps, integral, breakable);
+    } else if constexpr (kFused == Fused::Dtt) {
+      raiseBrokenFractions(s.bondLaw, y, neighbors, s.bondLength, i, b0, b1, breakable);
+    }
     const double m = weightedVolume_[i];
     double sum = 0;
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+    for (std::int64_t b = b0; b < b1; ++b) {
       if (!s.topology->ownSide(b)) continue;
       const int j = neighbors[b];
       // omega |xi|^2 eps = omega xi.eta
-      double dot = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double xi = x[3 * j + d] - x[3 * i + d];
-        dot += xi * ((y[3 * j + d] - y[3 * i + d]) - xi);
+      double xiEta;
+      if constexpr (kFused == Fused::Lsjt) {
+        xiEta = dot[b - b0];
+      } else {
+        xiEta = 0;
+        for (int d = 0; d < 3; ++d) {
+          const double xi = x[3 * j + d] - x[3 * i + d];
+          xiEta += xi * ((y[3 * j + d] - y[3 * i + d]) - xi);
+        }
       }
       const double omega = s.influence ? s.influence[b] : 1.0;
-      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      sum += omega * mu * dot * s.volume[j];
+      const double mu = damage ? 1.0 - damage[b] : 1.0;
+      sum += omega * mu * xiEta * s.volume[j];
     }
     dilatation_[i] = m > 0 ? kappa_ * sum / m : 0.0;
   }

@@ -36,6 +36,11 @@ class LinearizedLPS : public MaterialModel {
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
   bool acceptsSmoothBondLaw() const override { return true; }
+  // The block's LSJ-T update, or DTT's damage, runs in the dilatation loop (one walk over the
+  // bonds less a step): each point's dilatation reads only its own bonds' damage.
+  bool breaksInPrecompute() const override { return true; }
+  bool fusesLsjtUpdate() const override { return true; }
+  bool fusesSmoothBreak() const override { return true; }
 
   // kappa, c1 and m_i c2_i of the header comment, for the material's constants and mode.
   double kappa() const { return kappa_; }
@@ -49,6 +54,10 @@ class LinearizedLPS : public MaterialModel {
   static constexpr const char* kBeta = "Linearized_LPS_Beta";
 
  private:
+  // Which damage update the dilatation loop applies to each bond before it enters the sum.
+  enum class Fused { None, Lsjt, Dtt };
+  template <Fused kFused>
+  void dilatationLoop(const ModelState& state, const std::vector<int>& points);
   template <bool Smooth>
   void force(const ModelState& state, const std::vector<int>& points) const;
 
@@ -60,6 +69,7 @@ class LinearizedLPS : public MaterialModel {
   double* dilatation_ = nullptr;
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
+  std::vector<double> scratch_;  // one point's xi.eta, strains and LSJ-T integrals (fused)
 };
 
 }  // namespace peridot

@@ -8,6 +8,7 @@
 
 #include "core/Registry.hpp"
 #include "damage/BondLaw.hpp"
+#include "damage/LsjtStep.hpp"
 #include "fields/FieldManager.hpp"
 #include "parallel/Topology.hpp"
 
@@ -49,6 +50,9 @@ struct ModelState {
   float* breakableBondDamage = nullptr;
   unsigned char* breakableBondBroken = nullptr;  // the same with compact damage (bondBroken)
   double fusedCriticalStretch = 0.0;
+  // Set likewise when the block's LSJ-T update is fused into the material's precompute loop
+  // (MaterialModel::fusesLsjtUpdate): active() then, and breakableBondDamage is its damage.
+  LsjtStep fusedLsjt;
   // 2 for a planar run (points in z = 0; volumes already include the thickness), else 3.
   int dimension = 3;
   double thickness = 1.0;  // out-of-plane thickness of a 2D run
@@ -202,6 +206,10 @@ class MaterialModel {
   // Whether the model can also apply a Smooth law's damage (DamageModel::fusesIntoSmoothBondLaw)
   // in its computeForce bond loop, the same bits as the separate pass (float bond damage).
   virtual bool fusesSmoothBreak() const { return false; }
+  // Whether the model can apply LSJ-T's update (DamageModel::fusesIntoLinearizedStrain,
+  // ModelState::fusedLsjt) in its precompute bond loop, with LSJ-T's own per-point functions
+  // (damage/LsjtStep.hpp): the same bits as the separate pass (float bond damage).
+  virtual bool fusesLsjtUpdate() const { return false; }
   // Where a fused check runs: in computeForce (false), or in precompute (true: a state-based
   // model whose first bond loop, e.g. the dilatation, must already see this step's breaks). The
   // evaluator hands the model the breakable damage for that call only.
