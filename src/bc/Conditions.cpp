@@ -1,8 +1,10 @@
 #include "bc/Conditions.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "core/Error.hpp"
+#include "parallel/ExactSum.hpp"
 
 namespace peridot {
 
@@ -32,9 +34,14 @@ BoundaryConditions::BoundaryConditions(const std::vector<ConditionConfig>& condi
     }
     if (cc.kind == ConditionConfig::Kind::Traction) {
       hasBodyForce_ = true;
-      double local = 0, layer = 0;
-      for (int p : c.points) local += volume[p];
-      MPI_Allreduce(&local, &layer, 1, MPI_DOUBLE, MPI_SUM, comm);
+      // The layer's volume, summed exactly (ExactSum): a plain MPI sum of doubles rounds by
+      // the partition, and every loaded point's force would then differ in its last bits
+      // between rank counts.
+      std::vector<double> volumes;
+      for (int p : c.points) volumes.push_back(volume[p]);
+      long long count = static_cast<long long>(volumes.size());
+      MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, comm);
+      const double layer = exactSum(volumes, count, comm);
       c.scale = cc.surfaceArea / layer;  // the node set is not empty (checked with the deck)
     }
     conditions_.push_back(std::move(c));

@@ -62,6 +62,10 @@ peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Pa
 # A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
                   Plate2D.e exact_2d.comp 600)
+# A planar plate under Traction (the force per point divides by the loaded layer's volume, a sum
+# over ranks, now exact), Linearized LPS with LSJ-T: bitwise equal at 1-4 ranks.
+peridot_identical(TractionPlate ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/TractionPlate
+                  TractionPlate.yaml TractionPlate.e exact_2d.comp 600)
 # Elastic-plastic decks (ordinary state-based plasticity, history in bond fields): bitwise equal
 # at 1-4 ranks; the cube's bulk values are also checked against a hand computation
 # (test/mpi/test_plastic_cube.cpp).
