@@ -121,7 +121,9 @@ struct Lattice {
 
 template <typename T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+  // (Empty vectors may hold null data, which memcmp must not be given even for 0 bytes.)
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 void PrintTo(const Options& o, std::ostream* os) {
