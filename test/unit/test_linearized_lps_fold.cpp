@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "JitteredLattice.hpp"
 #include "Materials.hpp"
 #include "damage/LSJT.hpp"
 #include "evaluator/ModelEvaluator.hpp"
@@ -40,57 +41,13 @@ std::shared_ptr<DamageModel> damageModel(const std::string& name, double sc) {
 }
 
 // A jittered n^3 (or n^2 in z = 0) lattice of spacing 1, one Linearized LPS block.
-struct Lattice {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
+struct Lattice : peridot::testing::JitteredLattice {
   bool lsjt;
 
-  Lattice(int n, const Options& o) : lsjt(o.damage == "LSJ-T") {
-    const bool planar = !o.mode.empty();
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> jitter(-0.05, 0.05), horizon(1.9, 2.3);
-    long long id = 0;
-    std::vector<double> h;
-    for (int k = 0; k < (planar ? 1 : n); ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(),
-                         {i + jitter(rng), j + jitter(rng), planar ? 0.0 : k + jitter(rng)});
-          cloud.volume.push_back(1.0 + jitter(rng));
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(id++);
-          h.push_back(o.varyingHorizon ? horizon(rng) : 2.1);
-        }
-    cloud.blockNames[1] = "block_1";
-    if (planar) cloud.dimension = 2;
-    topology = buildTopology(cloud, h, TopologyOptions(), MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
-    for (int p = 0; p < topology.numOverlap; ++p) {
-      for (int d = 0; d < 3; ++d)
-        x[3 * p + d] = y[3 * p + d] = topology.referencePosition[3 * p + d];
-      v[p] = topology.volume[p];
-      hz[p] = topology.horizon[p];
-    }
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = peridot::testing::material("Linearized LPS", o.mode, 1.0e9, 0.3);
-    b.damage = damageModel(o.damage, 0.01);
-    for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, o.influence, timers);
-    if (planar) evaluator->setPlanar(1.0);
-    evaluator->setFuseCriticalStretch(o.fuse);
-    evaluator->initialize();
+  Lattice(int n, const Options& o)
+      : JitteredLattice(n, !o.mode.empty(), o.varyingHorizon, 7), lsjt(o.damage == "LSJ-T") {
+    addBlock(peridot::testing::material("Linearized LPS", o.mode, 1.0e9, 0.3),
+             damageModel(o.damage, 0.01), o.influence, o.fuse);
   }
   // y = x + a stretch along x growing with `step` plus a random field that differs per step.
   void deform(int step) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "JitteredLattice.hpp"
 #include "Materials.hpp"
 #include "damage/CriticalStretch.hpp"
 #include "damage/DTT.hpp"
@@ -48,52 +49,11 @@ struct Options {
 };
 
 // A jittered n^3 lattice (spacing 1), one LPS block with a critical stretch.
-struct Lattice {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
-  Lattice(int n, const Options& o) {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> jitter(-0.05, 0.05), horizon(1.9, 2.3);
-    long long id = 0;
-    std::vector<double> h;
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(), {i + jitter(rng), j + jitter(rng), k + jitter(rng)});
-          cloud.volume.push_back(1.0 + jitter(rng));
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(id++);
-          h.push_back(o.varyingHorizon ? horizon(rng) : 2.1);
-        }
-    cloud.blockNames[1] = "block_1";
-    topology = buildTopology(cloud, h, TopologyOptions(), MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
-    for (int p = 0; p < topology.numOverlap; ++p) {
-      for (int d = 0; d < 3; ++d)
-        x[3 * p + d] = y[3 * p + d] = topology.referencePosition[3 * p + d];
-      v[p] = topology.volume[p];
-      hz[p] = topology.horizon[p];
-    }
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = o.model == "Elastic" ? peridot::testing::material("Elastic", "", 1.0e9, 0.3)
-                                      : peridot::testing::material(o.model, "", 1.0e9);
-    b.damage = o.smoothDamage ? dtt(0.01) : criticalStretch(0.01);
-    for (int i = 0; i < topology.numOwned; ++i) b.points.push_back(i);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, o.influence, timers);
-    evaluator->setFuseCriticalStretch(o.fuse);
-    evaluator->initialize();
+struct Lattice : peridot::testing::JitteredLattice {
+  Lattice(int n, const Options& o) : JitteredLattice(n, false, o.varyingHorizon, 5) {
+    addBlock(o.model == "Elastic" ? peridot::testing::material("Elastic", "", 1.0e9, 0.3)
+                                  : peridot::testing::material(o.model, "", 1.0e9),
+             o.smoothDamage ? dtt(0.01) : criticalStretch(0.01), o.influence, o.fuse);
   }
   // y = x + a stretch along x growing with `step` plus a fixed random field.
   void deform(int step) {
