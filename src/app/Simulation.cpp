@@ -598,8 +598,7 @@ void Simulation::runSolver() {
         lastReport = now;
         const double elapsed = std::chrono::duration<double>(now - start).count();
         const double left = elapsed / (step - firstStep_ + 1) * (numSteps_ - step);
-        log_ << "  step " << step << "/" << numSteps_ << "  t = " << time_ << "  elapsed "
-             << formatSeconds(elapsed) << "  remaining ~" << formatSeconds(left) << std::endl;
+        log_ << progressLine(step, numSteps_, time_, elapsed, left) << std::endl;
       }
     }
   }

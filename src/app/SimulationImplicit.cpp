@@ -125,9 +125,8 @@ void Simulation::runImplicit() {
     *lastReport = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
     const long long done = record - firstRecord, last = firstRecord + numSteps_;
-    log_ << "  step " << record << "/" << last << "  t = " << t << "  elapsed "
-         << formatSeconds(elapsed) << "  remaining ~"
-         << formatSeconds(elapsed / static_cast<double>(done) * static_cast<double>(last - record))
+    log_ << progressLine(record, last, t, elapsed,
+                         elapsed / static_cast<double>(done) * static_cast<double>(last - record))
          << std::endl;
   };
   try {

@@ -35,4 +35,13 @@ inline std::string formatSeconds(double s) {
   return out.str();
 }
 
+// The progress line of a long run: "  step 120/5000  t = 0.0012  elapsed 5.0 s  remaining ~3 min".
+inline std::string progressLine(long long step, long long lastStep, double time, double elapsed,
+                                double remaining) {
+  std::ostringstream out;
+  out << "  step " << step << "/" << lastStep << "  t = " << time << "  elapsed "
+      << formatSeconds(elapsed) << "  remaining ~" << formatSeconds(remaining);
+  return out.str();
+}
+
 }  // namespace peridot
