@@ -94,6 +94,7 @@ int runDeck(const std::string& deckFile, bool checkOnly, int rank) {
     return 0;
   }
   if (rank == 0) {
+    std::cout.flush();  // the reports above first, then the error line
     std::cerr << "peridot: error: stopped " << why << " at step " << simulation.lastStep()
               << ", time " << simulation.time()
               << " without a checkpoint (the outputs hold the records written so far; "

@@ -36,6 +36,13 @@ function(expect_in text fragment)
   endif()
 endfunction()
 
+# signal_log(<log file> <variable>): what signal_run.sh wrote, stdout then stderr.
+function(signal_log file var)
+  file(READ "${WORK_DIR}/${file}" out)
+  file(READ "${WORK_DIR}/${file}.err" err)
+  set(${var} "${out}${err}" PARENT_SCOPE)
+endfunction()
+
 function(compare result gold)
   set(args)
   foreach(v ${NONZERO})
@@ -79,8 +86,9 @@ if(MODE STREQUAL "signal_implicit")
   deck(Long.yaml 0.0 ${FINAL} Long "")
   execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} Long.yaml Long.e long.log
                   WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
-  file(READ "${WORK_DIR}/long.log" log)
-  message("---- Long.yaml (Implicit) on 2 ranks, SIGTERM once under way: status ${rc}\n${log}")
+  signal_log(long.log all)
+  file(READ "${WORK_DIR}/long.log.err" log)  # the error line, whole (see signal_run.sh)
+  message("---- Long.yaml (Implicit) on 2 ranks, SIGTERM once under way: status ${rc}\n${all}")
   if(NOT rc EQUAL 5)
     message(FATAL_ERROR "the implicit run stopped by SIGTERM should exit with status 5")
   endif()
@@ -119,7 +127,7 @@ elseif(MODE STREQUAL "signal")
   execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} Cut.yaml peridot.checkpoint
                           cut.log
                   WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
-  file(READ "${WORK_DIR}/cut.log" log)
+  signal_log(cut.log log)
   message("---- Cut.yaml on 2 ranks, SIGTERM after the first checkpoint: status ${rc}\n${log}")
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "the run stopped by SIGTERM should exit with status 0")
@@ -144,7 +152,7 @@ elseif(MODE STREQUAL "signal")
   execute_process(COMMAND bash ${SIGNAL_RUN} ${MPIEXEC} 2 ${PERIDOT} NoRestart.yaml NoRestart.e
                           norestart.log
                   WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
-  file(READ "${WORK_DIR}/norestart.log" log)
+  signal_log(norestart.log log)
   message("---- NoRestart.yaml on 2 ranks, SIGTERM: status ${rc}\n${log}")
   if(rc EQUAL 0)
     message(FATAL_ERROR "a run without Restart stopped by a signal must exit non-zero")
