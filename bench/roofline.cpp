@@ -15,6 +15,7 @@
 
 #include "damage/DamageModel.hpp"
 #include "evaluator/ModelEvaluator.hpp"
+#include "neighbor/HalfBondList.hpp"
 
 using namespace peridot;
 
@@ -68,6 +69,8 @@ struct Scene {
     for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
     blocks.push_back(b);
     evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    evaluator->setHalfBondListAllowed(
+        false);  // the full lists' loops; the half list is built apart
     evaluator->initialize();
   }
 };
@@ -135,6 +138,31 @@ void PMBForceLoopFusedCriticalStretch(benchmark::State& state) {
       static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(PMBForceLoopFusedCriticalStretch)->Unit(benchmark::kMillisecond);
+
+// The same step over the half bond list that runs do (neighbor/HalfBondList.hpp): each bond once,
+// the pair force added to one end and subtracted from the other, rank-count identical.
+void PMBHalfBondListFusedCriticalStretch(benchmark::State& state) {
+  Scene& s = scene();
+  ModelState st = s.evaluator->state();
+  st.breakableBondDamage = const_cast<float*>(st.bondDamage);
+  st.fusedCriticalStretch = s.blocks[0].damage->fusableCriticalStretch();
+  // Built as the evaluator builds it for a run (the scene's evaluator keeps the full lists).
+  HalfBondList half;
+  if (!buildHalfBondList(s.topology, half)) {
+    state.SkipWithError("no half bond list");
+    return;
+  }
+  half.pairLength.resize(half.pairPoint.size());
+  for (std::size_t r = 0; r < half.rowPoint.size(); ++r)
+    for (std::int64_t p = half.rowPairOffsets[r]; p < half.rowPairOffsets[r + 1]; ++p)
+      half.pairLength[p] = referenceBondLength(st.x, half.rowPoint[r], half.pairPoint[p]);
+  half.gatherDamage(s.topology, st.bondDamage, nullptr);
+  st.halfBonds = &half;
+  for (auto _ : state) s.blocks[0].material->computeForce(st, s.blocks[0].points);
+  state.counters["bonds/s"] = benchmark::Counter(
+      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(PMBHalfBondListFusedCriticalStretch)->Unit(benchmark::kMillisecond);
 
 // An experiment for issue 16 (not what Peridot runs): the same PMB + critical-stretch update
 // over a *half* bond list (each pair once, j > i), the pair force added to i and subtracted from

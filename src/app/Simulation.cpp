@@ -261,6 +261,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   evaluator_->setCompactDamageAllowed(compact && !config_.restart.enabled &&
                                       !config_.solver.quasiStatic &&
                                       !config_.solver.noxQuasiStatic);
+  evaluator_->setHalfBondListAllowed(config_.discretization.halfBondList);
   evaluator_->initialize();
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();

@@ -166,11 +166,12 @@ double peakResidentBytes() {
 }  // namespace
 
 void Simulation::reportMemory(std::ostream& out) {
-  double local[3] = {static_cast<double>(fields_->bytesAllocated()),
-                     static_cast<double>(topology_.neighbors.size() * sizeof(int) +
-                                         topology_.bondOffsets.size() * sizeof(std::int64_t) +
-                                         topology_.bondSides.size()),
-                     peakResidentBytes()};
+  double local[3] = {
+      static_cast<double>(fields_->bytesAllocated()),
+      static_cast<double>(topology_.neighbors.size() * sizeof(int) +
+                          topology_.bondOffsets.size() * sizeof(std::int64_t) +
+                          topology_.bondSides.size() + evaluator_->halfBondListBytes()),
+      peakResidentBytes()};
   double total[3], largest = 0;
   MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, comm_);
   // On a cluster the largest rank decides whether a run fits in a node's memory.
@@ -217,6 +218,8 @@ void Simulation::reportSetup() {
            << sentMax[0] << " / " << sentSum[0] / topology_.numRanks << "\n";
     }
     if (planar_) log_ << "Planar (2D) run, thickness " << thickness_ << "\n";
+    if (evaluator_->usesHalfBondList())
+      log_ << "Bond loop: each bond once (half bond list; Discretization -> Half Bond List)\n";
     if (s.verletLimitEstimate) {
       log_ << "Stable time step estimate: " << stableDt_ << " (Verlet limit, "
            << verletLimitIterations_ << " Lanczos iterations; Peridigm's estimate " << peridigmDt_

@@ -30,6 +30,7 @@ void Simulation::resume() {
   const auto& s = config_.solver;
   const auto started = std::chrono::steady_clock::now();
   const CheckpointClock clock = checkpoint_->read();
+  evaluator_->bondDamageRewritten();  // the checkpoint's bond damage, also into the half list
   const double readSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const std::string where = "checkpoint " + checkpoint_->path();

@@ -249,6 +249,7 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   c.influenceFunction = r.has("Influence Function") ? r.string("Influence Function") : "One";
   c.partialVolumes = r.has("Partial Volumes") && r.boolean("Partial Volumes", false);
   c.compactBonds = r.choice("Bond Storage", {"Fast", "Compact"}, "Fast") == "Compact";
+  c.halfBondList = r.boolean("Half Bond List", true);
   {
     const auto& f = c.influenceFunction;
     if (f != "One" && f != "Parabolic Decay" && f != "Gaussian" && f != "Conical" &&

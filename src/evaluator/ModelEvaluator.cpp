@@ -53,7 +53,9 @@ void ModelEvaluator::initialize() {
   // damage pass that is not fused into the force loop): the kernels read them instead of the
   // neighbours' reference coordinates. Others compute |xi| with referenceBondLength() (same
   // bits) and save 8 bytes a bond.
-  bool needLength = storeBondLengths_;
+  // With the half bond list the pairs keep |xi| themselves (when lengths are stored at all).
+  const bool half = halfBondListApplies();
+  bool needLength = storeBondLengths_ && !half;
   for (const auto& b : blocks_)
     needLength = needLength || b.material->needsBondLength() ||
                  (b.damage && b.damage->needsBondLength() && !fusesDamage(b));
@@ -201,6 +203,39 @@ void ModelEvaluator::initialize() {
   }
   for (const auto& f : syncInit) fields_.refreshGhosts(f);
   syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
+
+  halfBondsBuilt_ = half && buildHalfBondList(topology_, halfBonds_);
+  if (halfBondsBuilt_) {
+    if (storeBondLengths_) {
+      halfBonds_.pairLength.resize(halfBonds_.pairPoint.size());
+      for (std::size_t r = 0; r < halfBonds_.rowPoint.size(); ++r)
+        for (std::int64_t p = halfBonds_.rowPairOffsets[r]; p < halfBonds_.rowPairOffsets[r + 1];
+             ++p)
+          halfBonds_.pairLength[p] =
+              referenceBondLength(state_.x, halfBonds_.rowPoint[r], halfBonds_.pairPoint[p]);
+    }
+    bondDamageRewritten();
+  }
+}
+
+void ModelEvaluator::bondDamageRewritten() {
+  if (halfBondsBuilt_) halfBonds_.gatherDamage(topology_, bondDamage_, bondBroken_);
+}
+
+bool ModelEvaluator::halfBondListApplies() const {
+  // One block (its force loop then covers every pair of the rank's points), a material that
+  // walks pairs, and a pair force that is the same bits read from either end: the linear law,
+  // omega = 1, bonds within both horizons, and bond damage that only a fused critical stretch
+  // writes (it breaks both entries of a bond together; a separate pass, or initial damage, might
+  // leave the two ends apart). Every condition is the same on every rank.
+  if (!halfBondListAllowed_ || blocks_.size() != 1) return false;
+  const Block& b = blocks_.front();
+  const bool influence = influenceFunction_ != "One" || partialVolumes_;  // stored per bond
+  if (!b.material->computesOverHalfBondList() || influence || !topology_.bondSides.empty())
+    return false;
+  if (!b.damage) return true;
+  return b.damage->bondLaw().kind == BondLaw::Kind::Linear && fusesCriticalStretch(b) &&
+         !b.damage->initializesDamage();
 }
 
 void ModelEvaluator::setThermal(const double* temperatureChange) {
@@ -282,11 +317,14 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
     for (const auto& f : syncAfterPrecompute_) fields_.refreshGhosts(f);
   }
   Timers::Scope t(timers_, "Force");
+  // Thermal strains come after initialize (setThermal): the half list's loop has none.
+  state_.halfBonds = halfBondsBuilt_ && !thermal_ ? &halfBonds_ : nullptr;
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
     breakable(b, false);
     b.material->computeForce(state_, b.points);
   }
+  state_.halfBonds = nullptr;
   state_.breakableBondDamage = nullptr;
   state_.breakableBondBroken = nullptr;
   state_.fusedCriticalStretch = 0.0;
@@ -335,6 +373,7 @@ void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
     auto& damage = fields_.bondFloat("Bond_Damage");
     std::copy(snapshot.bondDamage.begin(), snapshot.bondDamage.end(), damage.begin());
   }
+  bondDamageRewritten();
   // Blocks sharing a material instance saved the same state; restoring it twice is harmless.
   for (std::size_t k = 0; k < blocks_.size() && k < snapshot.materials.size(); ++k)
     blocks_[k].material->restoreDamageState(snapshot.materials[k]);

@@ -7,6 +7,7 @@
 #include "core/Timers.hpp"
 #include "evaluator/Block.hpp"
 #include "fields/FieldManager.hpp"
+#include "neighbor/HalfBondList.hpp"
 #include "parallel/Topology.hpp"
 
 namespace peridot {
@@ -35,6 +36,17 @@ class ModelEvaluator {
   // is faster than computing it); false lets models that do not need it compute it instead.
   void setStoreBondLengths(bool store) { storeBondLengths_ = store; }
   bool compactDamage() const { return compactDamage_; }
+  // Allows the bond-based materials to walk each bond once (neighbor/HalfBondList.hpp) where the
+  // scene allows it (the default); false keeps the two-sided loop. Before initialize().
+  void setHalfBondListAllowed(bool allowed) { halfBondListAllowed_ = allowed; }
+  // Whether initialize() built the half bond list (the same on every rank); its evaluations
+  // then use it except with thermal strains.
+  bool usesHalfBondList() const { return halfBondsBuilt_; }
+  std::size_t halfBondListBytes() const { return halfBonds_.bytes(); }
+  HalfBondList* halfBondList() { return halfBondsBuilt_ ? &halfBonds_ : nullptr; }
+  // To be called after the bond damage arrays were written from outside (a checkpoint read):
+  // the half list's copy of the damage is gathered again.
+  void bondDamageRewritten();
   // Partial-volume quadrature (topology built with the CellOverlap rule): every bond's influence
   // is multiplied by the fraction of the neighbour's cell inside the horizon. Before initialize().
   void setPartialVolumes(bool partial) {
@@ -106,6 +118,11 @@ class ModelEvaluator {
   bool storeBondLengths_ = true;
   bool compactDamage_ = false;
   bool partialVolumes_ = false;
+  bool halfBondListAllowed_ = true;
+  bool halfBondsBuilt_ = false;
+  HalfBondList halfBonds_;
+  // Whether the scene allows the half list (see initialize()).
+  bool halfBondListApplies() const;
   bool velocityGhosts_ =
       false;  // some block's material reads the velocities (the same on all ranks)
   std::vector<std::string> syncAfterPrecompute_;

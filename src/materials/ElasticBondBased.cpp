@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "materials/BondBasedKernels.hpp"
 #include "materials/BondBasedTangent.hpp"
+#include "materials/HalfPairForce.hpp"
 
 namespace peridot {
 
@@ -76,7 +77,10 @@ void ElasticBondBased::initialize(const ModelState& s, const std::vector<int>& p
 }
 
 void ElasticBondBased::computeForce(const ModelState& s, const std::vector<int>& points) {
-  pairForce<false>(s, points, micromodulus_);
+  if (s.halfBonds)
+    halfPairForce(s, micromodulus_, false);
+  else
+    pairForce<false>(s, points, micromodulus_);
 }
 
 void ElasticBondBased::addStiffness(const ModelState& s, const std::vector<int>& points,

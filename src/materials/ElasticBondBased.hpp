@@ -42,6 +42,7 @@ class ElasticBondBased : public MaterialModel {
   // The pair loops compute |xi| from the reference coordinates and read either damage form.
   bool needsBondLength() const override { return false; }
   bool acceptsBrokenBondFlags() const override { return true; }
+  bool computesOverHalfBondList() const override { return true; }
 
   static constexpr const char* kMicromodulus = "PMB_Micromodulus";
 

@@ -14,6 +14,8 @@
 
 namespace peridot {
 
+struct HalfBondList;
+
 // Everything a kernel reads or writes, as raw arrays (overlap-indexed unless noted).
 struct ModelState {
   const Topology* topology = nullptr;
@@ -82,6 +84,9 @@ struct ModelState {
   // is written, so any number of trials may precede the one commit. (Bond damage is not such a
   // history: it is irreversible and the solvers restore it themselves where they must.)
   bool commitHistory = true;
+  // Set by the evaluator for a material that walks each bond once (computesOverHalfBondList)
+  // where the scene allows it (ModelEvaluator::usesHalfBondList); null otherwise.
+  HalfBondList* halfBonds = nullptr;  // its pair damage is written where bonds break
 };
 
 // X0^2 + X1^2 + X2^2 in one fixed rounding. With FMA hardware the compiler may contract a sum of
@@ -222,6 +227,10 @@ class MaterialModel {
   // evaluator keeps compact broken-bond flags (1 byte a bond instead of a 4-byte float) only if
   // every block's material accepts them and every damage model is a fused critical stretch.
   virtual bool acceptsBrokenBondFlags() const { return false; }
+  // Whether computeForce walks each bond once when the evaluator hands it a half bond list
+  // (ModelState::halfBonds): a pairwise force with the linear law, no influence, no bond sides,
+  // no thermal strain, at most a fused critical stretch (ModelEvaluator::usesHalfBondList).
+  virtual bool computesOverHalfBondList() const { return false; }
   // Whether the model must apply its block's damage itself (it also breaks state the damage
   // pass does not know of): it then accepts only a fusable damage model (Critical Stretch).
   virtual bool requiresFusedCriticalStretch() const { return false; }

@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "materials/BondBasedKernels.hpp"
 #include "materials/BondBasedTangent.hpp"
+#include "materials/HalfPairForce.hpp"
 
 namespace peridot {
 
@@ -38,7 +39,10 @@ void NormalizedPMB::initialize(const ModelState& s, const std::vector<int>& poin
 }
 
 void NormalizedPMB::computeForce(const ModelState& s, const std::vector<int>& points) {
-  pairForce<true>(s, points, micromodulus_);
+  if (s.halfBonds)
+    halfPairForce(s, micromodulus_, true);
+  else
+    pairForce<true>(s, points, micromodulus_);
 }
 
 void NormalizedPMB::addStiffness(const ModelState& s, const std::vector<int>& points,

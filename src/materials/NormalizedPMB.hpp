@@ -28,6 +28,7 @@ class NormalizedPMB : public MaterialModel {
   // The pair loops compute |xi| from the reference coordinates and read either damage form.
   bool needsBondLength() const override { return false; }
   bool acceptsBrokenBondFlags() const override { return true; }
+  bool computesOverHalfBondList() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override { return {kMicromodulus}; }

@@ -237,6 +237,11 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   const std::size_t numOwned = owned.size();
   const std::size_t numCandidates = cand.source.size();
   t.numOwned = static_cast<int>(numOwned);
+  t.hasCurveBox = true;
+  for (int d = 0; d < 3; ++d) {
+    t.curveLo[d] = facts.lo[d];
+    t.curveHi[d] = facts.hi[d];
+  }
 
   // Space-filling-curve order of the owned points (ties broken by global id).
   std::vector<std::size_t> order(numOwned);  // owned local index k -> owned point p

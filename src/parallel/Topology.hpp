@@ -24,7 +24,12 @@ using Import = Tpetra::Import<LocalOrdinal, GlobalOrdinal>;
 struct Topology {
   MPI_Comm comm = MPI_COMM_WORLD;
   int rank = 0, numRanks = 1;
-  int numOwned = 0;    // local indices [0, numOwned) are owned, in space-filling-curve order
+  int numOwned = 0;  // local indices [0, numOwned) are owned, in space-filling-curve order
+  // The box of that curve (every point's bounding box, the same on every rank): ordering points
+  // by (mortonKey(x, curveLo, curveHi), global id) is one order whatever the partition, and the
+  // owned points' local order is it. hasCurveBox is false for a topology made by hand.
+  bool hasCurveBox = false;
+  double curveLo[3] = {0, 0, 0}, curveHi[3] = {0, 0, 0};
   int numOverlap = 0;  // owned followed by ghosts (ghosts sorted by global id)
   long long globalNumPoints = 0;
   long long globalNumBonds = 0;                // one-sided bond entries, all ranks

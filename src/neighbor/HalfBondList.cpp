@@ -1,0 +1,148 @@
+#include "neighbor/HalfBondList.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+
+#include "parallel/Partition.hpp"
+
+namespace peridot {
+
+std::size_t HalfBondList::bytes() const {
+  return rowPoint.size() * sizeof(int) + rowPairOffsets.size() * sizeof(std::int64_t) +
+         pairPoint.size() * sizeof(int) +
+         (pairSlot.size() + pairMirrorSlot.size()) * sizeof(std::uint16_t) +
+         pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float) + pairBroken.size();
+}
+
+void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
+                                const unsigned char* bondBroken) {
+  pairDamage.assign(bondDamage ? pairPoint.size() : 0, 0.0f);
+  pairBroken.assign(bondBroken ? pairPoint.size() : 0, 0);
+  if (!bondDamage && !bondBroken) return;
+  for (std::size_t r = 0; r + 1 < rowPairOffsets.size(); ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p) {
+      const std::int64_t e = fullEntry(t, r, p);
+      if (bondDamage) pairDamage[p] = bondDamage[e];
+      if (bondBroken) pairBroken[p] = bondBroken[e];
+    }
+}
+
+bool buildHalfBondList(const Topology& t, HalfBondList& list) {
+  list = HalfBondList();
+  const int n = t.numOwned;
+  const int numReal = t.numOwned + t.numGhosts;
+  int usable = t.hasCurveBox && t.numOverlap == numReal ? 1 : 0;
+  for (int i = 0; i < n && usable; ++i)
+    if (t.bondOffsets[i + 1] - t.bondOffsets[i] > 65536) usable = 0;
+  MPI_Allreduce(MPI_IN_PLACE, &usable, 1, MPI_INT, MPI_MIN, t.comm);
+  if (!usable) return false;
+
+  // The curve order of every point this rank sees.
+  std::vector<unsigned long long> key(static_cast<std::size_t>(numReal));
+  for (int k = 0; k < numReal; ++k)
+    key[k] = mortonKey(&t.referencePosition[3 * static_cast<std::size_t>(k)], t.curveLo, t.curveHi);
+  const auto before = [&](int a, int b) {
+    return key[a] != key[b] ? key[a] < key[b] : t.overlapGlobalId[a] < t.overlapGlobalId[b];
+  };
+
+  // Pairs per owned row (its neighbours after it) and per ghost row (its owned neighbours after
+  // it, found from their rows).
+  std::vector<std::int64_t> ownedCount(static_cast<std::size_t>(n), 0);
+  std::vector<std::int64_t> ghostCount(static_cast<std::size_t>(t.numGhosts), 0);
+  for (int i = 0; i < n; ++i)
+    for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
+      const int j = t.neighbors[e];
+      if (before(i, j))
+        ++ownedCount[i];
+      else if (j >= n)
+        ++ghostCount[j - n];
+    }
+  // Rows: every owned point (local order is curve order), and the ghosts with pairs merged in.
+  std::vector<int> ghosts;
+  for (int g = 0; g < t.numGhosts; ++g)
+    if (ghostCount[g] > 0) ghosts.push_back(n + g);
+  std::sort(ghosts.begin(), ghosts.end(), before);
+  list.rowPoint.reserve(static_cast<std::size_t>(n) + ghosts.size());
+  {
+    std::size_t g = 0;
+    for (int i = 0; i < n; ++i) {
+      for (; g < ghosts.size() && before(ghosts[g], i); ++g) list.rowPoint.push_back(ghosts[g]);
+      list.rowPoint.push_back(i);
+    }
+    for (; g < ghosts.size(); ++g) list.rowPoint.push_back(ghosts[g]);
+  }
+  const std::size_t rows = list.rowPoint.size();
+  list.rowPairOffsets.assign(rows + 1, 0);
+  std::vector<std::int64_t> ghostRowStart(static_cast<std::size_t>(t.numGhosts), -1);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const int a = list.rowPoint[r];
+    list.rowPairOffsets[r + 1] =
+        list.rowPairOffsets[r] + (a < n ? ownedCount[a] : ghostCount[a - n]);
+    if (a >= n) ghostRowStart[a - n] = list.rowPairOffsets[r];
+  }
+  const std::int64_t pairs = list.rowPairOffsets.back();
+  list.pairPoint.resize(static_cast<std::size_t>(pairs));
+  list.pairSlot.resize(static_cast<std::size_t>(pairs));
+  std::vector<std::int64_t> ownedRowStart(static_cast<std::size_t>(n));
+  for (std::size_t r = 0; r < rows; ++r)
+    if (list.rowPoint[r] < n) ownedRowStart[list.rowPoint[r]] = list.rowPairOffsets[r];
+  for (int i = 0; i < n; ++i)
+    for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
+      const int j = t.neighbors[e];
+      const auto slot = static_cast<std::uint16_t>(e - t.bondOffsets[i]);
+      if (before(i, j)) {
+        const std::int64_t p = ownedRowStart[i]++;
+        list.pairPoint[p] = j;
+        list.pairSlot[p] = slot;
+      } else if (j >= n) {
+        const std::int64_t p = ghostRowStart[j - n]++;
+        list.pairPoint[p] = i;
+        list.pairSlot[p] = slot;
+      }
+    }
+
+  // Mirror entries: visiting the later ends in global-id order, the entries of row b that hold
+  // a pair of an earlier owned row j come up in the order of row j's pairs (sorted by the
+  // global id of their later ends), so one cursor per row finds them all in one pass.
+  list.pairMirrorSlot.assign(static_cast<std::size_t>(pairs), 0);
+  std::vector<int> byId(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) byId[i] = i;
+  std::sort(byId.begin(), byId.end(),
+            [&](int a, int b) { return t.overlapGlobalId[a] < t.overlapGlobalId[b]; });
+  std::vector<std::int64_t> cursor(static_cast<std::size_t>(n)),
+      rowEnd(static_cast<std::size_t>(n));
+  std::int64_t ownedPairs = 0, mirrors = 0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    const int a = list.rowPoint[r];
+    if (a >= n) continue;
+    cursor[a] = list.rowPairOffsets[r];
+    rowEnd[a] = list.rowPairOffsets[r + 1];
+    for (std::int64_t p = cursor[a]; p < rowEnd[a]; ++p) ownedPairs += list.pairPoint[p] < n;
+  }
+  int symmetric = 1;
+  for (const int b : byId) {
+    for (std::int64_t e = t.bondOffsets[b]; e < t.bondOffsets[b + 1] && symmetric; ++e) {
+      const int j = t.neighbors[e];
+      if (j >= n || !before(j, b)) continue;
+      std::int64_t& p = cursor[j];
+      while (p < rowEnd[j] && list.pairPoint[p] != b) ++p;  // skips row j's pairs with ghosts
+      if (p == rowEnd[j]) {
+        symmetric = 0;  // b's row holds j, j's row does not hold b
+        break;
+      }
+      list.pairMirrorSlot[p++] = static_cast<std::uint16_t>(e - t.bondOffsets[b]);
+      ++mirrors;
+    }
+  }
+  // Every bond must be in both ends' lists: the loop reads one end's damage for both.
+  if (mirrors != ownedPairs) symmetric = 0;
+  MPI_Allreduce(MPI_IN_PLACE, &symmetric, 1, MPI_INT, MPI_MIN, t.comm);
+  if (!symmetric) {
+    list = HalfBondList();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace peridot

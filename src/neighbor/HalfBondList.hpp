@@ -1,0 +1,61 @@
+#pragma once
+// Each bond once: the half bond list over which a pairwise (bond-based) force loop applies
+// Newton's third law, adding the pair force to one end and subtracting it from the other, so
+// that it computes each bond's stretch, square root and division once instead of twice.
+//
+// Results identical at any rank count need every point's force summed in one order whatever the
+// partition. The pairs are ordered by the space-filling curve of the topology (Morton key of the
+// reference position in the global box, then global id: Topology::curveLo/Hi), an order of all
+// points that does not depend on the partition. A pair belongs to the row of its earlier end;
+// rows are walked in curve order, and a point's force is the sum, in that order, of the pairs
+// of the earlier rows that reach it, then of its own row's pairs (in global-id order). A rank
+// walks the rows of its owned points and also the rows of those ghosts that precede one of its
+// owned neighbours, so that it sees every pair of its owned points in that same order: bonds
+// between ranks are computed on both (a surface's worth of duplicated work, no reverse
+// communication). Only owned points receive force.
+//
+// The pairs carry what the loop reads, contiguous: the later end, |xi| (optional: else computed
+// from the reference positions, the same bits), and a copy of the bond damage. The full
+// (two-sided) lists stay what the rest of the code reads (outputs, checkpoints, tangents): a
+// break is written to both (recordBreak), and the copy is gathered again from the full lists
+// whenever something else rewrites them (gatherDamage: a restored trial, a restart).
+#include <cstdint>
+#include <vector>
+
+#include "parallel/Topology.hpp"
+
+namespace peridot {
+
+struct HalfBondList {
+  std::vector<int> rowPoint;                 // per row, in curve order: its overlap index
+  std::vector<std::int64_t> rowPairOffsets;  // rows + 1
+  std::vector<int> pairPoint;                // per pair: the later end (overlap index)
+  // Per pair: its entry in the full list row of its earlier end if that is owned, else of its
+  // later end (then owned): bondOffsets[holder] + pairSlot.
+  std::vector<std::uint16_t> pairSlot;
+  // Per pair with both ends owned: its entry in the later end's row, bondOffsets[later] +
+  // pairMirrorSlot (a break is recorded at both ends).
+  std::vector<std::uint16_t> pairMirrorSlot;
+  std::vector<double> pairLength;         // per pair |xi|, or empty (computed in the loop)
+  std::vector<float> pairDamage;          // per pair, when the run keeps float bond damage
+  std::vector<unsigned char> pairBroken;  // per pair, when it keeps broken-bond flags
+
+  std::int64_t numPairs() const { return static_cast<std::int64_t>(pairPoint.size()); }
+  std::size_t bytes() const;
+  // The full-list entry of pair p of row r.
+  std::int64_t fullEntry(const Topology& t, std::size_t r, std::int64_t p) const {
+    const int a = rowPoint[r];
+    const int holder = a < t.numOwned ? a : pairPoint[p];
+    return t.bondOffsets[holder] + pairSlot[p];
+  }
+  // Copies the run's bond damage (float or flags; null: none) into the pairs.
+  void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
+};
+
+// Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
+// `list` empty) where it cannot be used: a topology without a curve box, periodic images, a full
+// row longer than 65536 entries, or lists where a bond between owned points is in one end's
+// list only. Collective: every rank returns the same answer.
+bool buildHalfBondList(const Topology& topology, HalfBondList& list);
+
+}  // namespace peridot
