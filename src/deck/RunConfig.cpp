@@ -400,6 +400,21 @@ const VariableInfo* findOutputVariable(const std::string& name) {
   return nullptr;
 }
 
+std::vector<std::string> distinctOutputVariables(const std::vector<std::string>& requested) {
+  auto has = [&](const std::string& name) {
+    return std::find(requested.begin(), requested.end(), name) != requested.end();
+  };
+  std::vector<std::string> out;
+  for (const auto& v : requested) {
+    if (std::find(out.begin(), out.end(), v) != out.end()) continue;
+    std::string tensor;
+    int component = 0;
+    if (tensorComponent(v, tensor, component) && has(tensor)) continue;
+    out.push_back(v);
+  }
+  return out;
+}
+
 namespace {
 
 // FNV-1a, 64 bits: stable across builds and platforms (std::hash is not).

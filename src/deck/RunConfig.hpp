@@ -142,5 +142,10 @@ const VariableInfo* findOutputVariable(const std::string& name);
 // True when `name` is component <row><column> of a full-tensor output variable (e.g.
 // Cauchy_StressXY): `tensor` is then the tensor's name and `component` 3 row + column.
 bool tensorComponent(const std::string& name, std::string& tensor, int& component);
+// The variables one output file writes for `requested` (its streams' lists, in deck order):
+// each name once, and a tensor component (Cauchy_StressXX) left out when its tensor
+// (Cauchy_Stress) is requested too, since the tensor writes all nine components under the
+// same names (two variables of one name in a file: a reader by name gets either).
+std::vector<std::string> distinctOutputVariables(const std::vector<std::string>& requested);
 
 }  // namespace peridot
