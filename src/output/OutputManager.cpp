@@ -12,6 +12,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "deck/OutputVariables.hpp"
 
 namespace peridot {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "deck/RunConfig.hpp"
+#include "deck/OutputVariables.hpp"
 
 namespace peridot {
 namespace {
