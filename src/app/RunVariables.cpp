@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "deck/RunConfig.hpp"
+#include "deck/OutputVariables.hpp"
 #include "materials/Correspondence.hpp"
 #include "neighbor/PartialVolume.hpp"
 

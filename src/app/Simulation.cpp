@@ -402,13 +402,16 @@ void Simulation::prepareSolver() {
                      "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
   }
   origin_ = s.initialTime;
+  // The motion of prescribed components is the user's, not the integration's: not checked.
+  std::vector<double> prescribed(3 * static_cast<std::size_t>(topology_.numOwned), 0.0);
+  conditions_->markPrescribed(prescribed.data());
   divergence_ = std::make_unique<DivergenceMonitor>(
       topology_.numOwned, fields_->node("Horizon", 1),
       [this](int i) {
         return "point " + std::to_string(topology_.overlapGlobalId[i] + 1) + " (block " +
                blocks_[blockIndexOfPoint_[i]].name + ")";
       },
-      dt_, stableDt_, comm_);
+      dt_, stableDt_, comm_, prescribed.data());
 }
 
 void Simulation::openOutputs() {

@@ -127,20 +127,4 @@ struct RunConfig {
 
 RunConfig readRunConfig(const Teuchos::ParameterList& deck);
 
-// Output variables Peridot knows, with the number of components (1 or 3) and whether they are
-// written per node (vectors) or per element (scalars), Peridigm's layout.
-struct VariableInfo {
-  std::string name;
-  int components;
-  std::string description;
-};
-// The suffixes of a full tensor's nine components, row-major (Peridigm's names).
-inline constexpr const char* kTensorComponentSuffixes[9] = {"XX", "XY", "XZ", "YX", "YY",
-                                                            "YZ", "ZX", "ZY", "ZZ"};
-const std::vector<VariableInfo>& knownOutputVariables();
-const VariableInfo* findOutputVariable(const std::string& name);
-// True when `name` is component <row><column> of a full-tensor output variable (e.g.
-// Cauchy_StressXY): `tensor` is then the tensor's name and `component` 3 row + column.
-bool tensorComponent(const std::string& name, std::string& tensor, int& component);
-
 }  // namespace peridot

@@ -12,6 +12,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "deck/OutputVariables.hpp"
 
 namespace peridot {
 
@@ -86,11 +87,11 @@ OutputManager::OutputManager(const RunConfig& config, const std::map<int, std::s
           File{path, out.path + " -> Output Filename", {}, {}, {}, nullptr, onlyGlobal});
       it = files_.end() - 1;
     }
-    for (const auto& v : out.variables)
-      if (std::find(it->variables.begin(), it->variables.end(), v) == it->variables.end())
-        it->variables.push_back(v);
+    it->variables.insert(it->variables.end(), out.variables.begin(), out.variables.end());
     it->triggers.push_back({out.frequency, out.initialStep, out.finalStep});
   }
+  // Each variable name once per file (streams sharing a file, a tensor and its components).
+  for (auto& f : files_) f.variables = distinctOutputVariables(f.variables);
   {
     // Checked here, before any file is made and before the names reach the Exodus library
     // (which copies a long name into a fixed buffer): every file of the run can be created.

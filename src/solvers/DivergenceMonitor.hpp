@@ -19,6 +19,10 @@
 //  * bound: q > 1, the force would carry a point across its whole neighbourhood in one step.
 //    No meaningful run comes near it (it takes strains of order one), whatever its cause.
 //
+// Only free degrees of freedom count: a component whose motion a boundary condition prescribes
+// is left out (its acceleration is the reaction to the user's motion, not the integration's;
+// a fully prescribed run is never stopped, however large the prescribed deformation).
+//
 // It only reads the accelerations: no result changes. Each step costs one pass over the owned
 // accelerations, a copy of them, and two small MPI_Allreduce calls.
 #include <mpi.h>
@@ -34,8 +38,10 @@ class DivergenceMonitor {
  public:
   // Owned points only. `horizon` per owned point; `describe(i)` names owned point i in messages
   // (e.g. "point 17 (block block_1)"). `dt` and `stableDt`: the run's time step and estimate.
+  // `prescribed`: 3 per owned point, non-zero where the component's motion is prescribed (left
+  // out of the check); null when none is.
   DivergenceMonitor(int numOwned, const double* horizon, std::function<std::string(int)> describe,
-                    double dt, double stableDt, MPI_Comm comm);
+                    double dt, double stableDt, MPI_Comm comm, const double* prescribed = nullptr);
 
   // Collective, after the accelerations of `step` are computed (steps in increasing order).
   // Throws RunError on every rank (marked collective) when the run diverges.
@@ -72,7 +78,8 @@ class DivergenceMonitor {
   double dt_, stableDt_;
   MPI_Comm comm_;
   int rank_ = 0;
-  std::vector<double> previous_;  // a of the previous check, owned points
+  std::vector<double> free_;      // 3 per owned point: 1 for a free component, 0 if prescribed
+  std::vector<double> previous_;  // a of the previous check (free components), owned points
   bool havePrevious_ = false;
   int run_ = 0;                 // consecutive steps of growth with reversal
   std::deque<Record> history_;  // oldest first, back to the start of the current run

@@ -63,9 +63,12 @@ double QuasiStatic::lineSearch(double residualNorm) {
     return problem_.evaluateResidual();
   };
   double best = tryStep(1.0), bestAlpha = 1.0;
+  // Non-finite (adaptive load stepping only; otherwise StaticProblem threw): the attempt fails.
+  if (!std::isfinite(best)) return best;
   if (best < residualNorm) return best;
   for (double alpha : {0.75, 0.5, 0.3, 0.2, 0.1}) {
     const double norm = tryStep(alpha);
+    if (!std::isfinite(norm)) return norm;
     if (norm < best) {
       best = norm;
       bestAlpha = alpha;
@@ -88,6 +91,15 @@ QuasiStatic::StepResult QuasiStatic::solveStep(long long step, double previous, 
   if (c_.b) c_.conditions->applyBodyForce(time, c_.b, t.numOwned);
   StepResult r;
   r.norm = problem_.evaluateResidual();
+  if (!std::isfinite(r.norm)) {
+    // Adaptive load stepping (otherwise evaluateResidual threw): a failed attempt.
+    if (c_.rank == 0) {
+      log << "Load step " << step << ", time " << previous << " -> " << time
+          << ": the residual at the step's prescribed displacements is not finite\n";
+    }
+    r.nonFinite = true;
+    return r;
+  }
   // Convergence: Absolute Tolerance, or Relative Tolerance x the load of the step: the
   // reactions at the held components (Peridigm) and, with body forces, the applied force.
   r.criterion = problem_.criterion(config_.absoluteTolerance, config_.tolerance, r.norm);
@@ -150,12 +162,17 @@ QuasiStatic::StepResult QuasiStatic::solveStep(long long step, double previous, 
       r.norm = lineSearch(r.norm);
     }
     ++iteration;
+    if (!std::isfinite(r.norm)) {
+      if (c_.rank == 0) log << "  --the residual is not finite: the step failed--\n";
+      r.nonFinite = true;
+      break;
+    }
   }
   r.iterations = iteration - 1;
   r.linearIterations = static_cast<int>(stats_.linearIterations - linearBefore);
   stats_.newtonIterations += r.iterations;
   // Converged, or within 100x of the criterion: accepted with a warning (as Peridigm).
-  r.converged = !r.linearFailed && r.norm < 100.0 * r.criterion;
+  r.converged = !r.linearFailed && !r.nonFinite && r.norm < 100.0 * r.criterion;
   if (r.converged && r.norm > r.criterion && c_.rank == 0) {
     log << "  warning: residual " << r.norm << " above the criterion after "
         << config_.maxIterations << " iterations; within 100x: accepted (as Peridigm)\n";
@@ -183,8 +200,9 @@ void QuasiStatic::exhausted(long long step, const LoadSchedule& schedule, const 
                  : "Maximum total load step reductions (" +
                        std::to_string(adaptive.maxTotalReductions) + ")")
       << "; last attempt: " << last.iterations << " Newton iteration(s)"
-      << (last.linearFailed ? " (the linear solver failed)" : "") << ", residual "
-      << formatNumber(last.norm) << ", criterion " << formatNumber(last.criterion);
+      << (last.linearFailed ? " (the linear solver failed)" : "")
+      << (last.nonFinite ? " (the residual is not finite: a force or displacement diverged)" : "")
+      << ", residual " << formatNumber(last.norm) << ", criterion " << formatNumber(last.criterion);
   if (!adaptive.switchToVerlet) {
     std::ostringstream msg;
     msg << "QuasiStatic: " << why.str()
@@ -239,8 +257,11 @@ void QuasiStatic::run() {
     // A cut step restarts from this state: bond damage is irreversible, so keep it. (History
     // models are not touched: a trial evaluation commits none, ModelState::commitHistory.)
     if (adaptive.enabled) c_.evaluator->saveDamage(stepDamage_);
+    // With adaptive load stepping a non-finite residual is a failed attempt, not a stop.
+    problem_.setReturnNonFiniteResidual(adaptive.enabled);
     const StepResult r =
         solveStep(step, previous, time, stepStart, predictor, step > 1 || c_.predictorFromPrevious);
+    problem_.setReturnNonFiniteResidual(false);
     stats_.attempts.push_back({previous, time, r.converged});
     if (!r.converged) {
       if (!adaptive.enabled) {
@@ -264,9 +285,13 @@ void QuasiStatic::run() {
       if (cut) {
         if (c_.outputs && adaptive.adaptiveOutputFrequency) c_.outputs->multiplyFrequency(2);
         if (c_.rank == 0) {
-          log << "  load step " << step << " failed (residual " << r.norm << ", criterion "
-              << r.criterion << "): cut in half, retried over " << schedule.start() << " -> "
-              << schedule.end() << " (reduction " << schedule.reductionsThisStep() << " of "
+          log << "  load step " << step << " failed (";
+          if (r.nonFinite)
+            log << "non-finite residual";
+          else
+            log << "residual " << r.norm << ", criterion " << r.criterion;
+          log << "): cut in half, retried over " << schedule.start() << " -> " << schedule.end()
+              << " (reduction " << schedule.reductionsThisStep() << " of "
               << adaptive.maxReductionsInOneStep << " in this step, " << schedule.totalReductions()
               << " of " << adaptive.maxTotalReductions << " in all)\n";
         }

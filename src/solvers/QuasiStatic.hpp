@@ -67,12 +67,15 @@ class QuasiStatic {
 
  private:
   struct StepResult {
-    bool converged = false, linearFailed = false;
+    // nonFinite: an evaluation of the attempt gave a non-finite residual (adaptive only;
+    // otherwise StaticProblem throws).
+    bool converged = false, linearFailed = false, nonFinite = false;
     double norm = 0, criterion = 0;
     int iterations = 0, linearIterations = 0;
   };
   // One attempt at the load step [previous, time] from the owned displacement `stepStart`
-  // (the current c_.u). Throws RunError on a failed linear solve unless adaptive.
+  // (the current c_.u). Throws RunError on a failed linear solve or a non-finite residual unless
+  // adaptive; with adaptive load stepping both end the attempt as failed.
   StepResult solveStep(long long step, double previous, double time,
                        const std::vector<double>& stepStart, const std::vector<double>& predictor,
                        bool usePredictor);

@@ -66,7 +66,7 @@ double StaticProblem::evaluateResidual(bool commit) {
       residual_[k] = held_[k] != 0.0 ? 0.0 : c_.volume[i] * (c_.f[k] + (c_.b ? c_.b[k] : 0.0));
     }
   const double norm = globalNorm(residual_, c_.comm);
-  if (!std::isfinite(norm)) {
+  if (!std::isfinite(norm) && !returnNonFinite_) {
     throw RunError(std::string(name_) +
                    ": the residual is not finite (a force or displacement diverged)");
   }

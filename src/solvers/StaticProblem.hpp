@@ -18,6 +18,9 @@ class StaticProblem {
   // step (history models keep its start, ModelState::commitHistory) unless `commit`; finishStep
   // commits. Collective.
   double evaluateResidual(bool commit = false);
+  // A non-finite ||R|| throws RunError (the default), or with `returned` is returned for the
+  // caller to treat as a failed attempt (QuasiStatic's adaptive load stepping cuts the step).
+  void setReturnNonFiniteResidual(bool returned) { returnNonFinite_ = returned; }
   // A load step of duration dt from the owned displacement `stepStart` (kept by the caller):
   // rate models see dt and the velocity (u - stepStart) / dt of the step's increment.
   void beginStep(double dt, const std::vector<double>* stepStart) {
@@ -58,6 +61,7 @@ class StaticProblem {
   long long rankDeficient_ = 0;   // points held because no intact bond is left
   double stepDt_ = 0.0;           // the load step's duration (0 before the first)
   const std::vector<double>* stepStart_ = nullptr;
+  bool returnNonFinite_ = false;
 };
 
 // sqrt(sum v^2) over all ranks.

@@ -202,6 +202,13 @@ peridot_baddeck(shorter_than_one_step DECK shorter_than_one_step.yaml
 # ---- unsupported features ----
 peridot_baddeck(contact_without_models DECK contact_without_models.yaml
   EXPECT [[Contact -> Models: required list is missing]])
+# A residual that overflows at every load time: QuasiStatic stops at once; with Adaptive
+# Load-Stepping each attempt fails and is cut until the reductions are exhausted.
+peridot_baddeck(quasistatic_nonfinite DECK quasistatic_nonfinite.yaml STATUS 3
+  EXPECT [[QuasiStatic: the residual is not finite (a force or displacement diverged)]])
+peridot_baddeck(quasistatic_nonfinite_adaptive DECK quasistatic_nonfinite_adaptive.yaml STATUS 3
+  EXPECT [[QuasiStatic: load step 1 (time 0 -> 0.5) did not converge after 1 reduction(s) of this step]]
+  ALSO [[(the residual is not finite: a force or displacement diverged)]])
 peridot_baddeck(noxquasistatic_ml DECK noxquasistatic_ml.yaml
   EXPECT [[Solver -> NOXQuasiStatic -> Direction -> Newton -> Linear Solver -> Preconditioner: ML (Epetra's multigrid) has no counterpart]])
 peridot_baddeck(noxquasistatic_rkpm DECK noxquasistatic_rkpm.yaml

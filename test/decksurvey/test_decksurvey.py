@@ -5,7 +5,8 @@ survey script itself.
    of Elastic Correspondence under a fully prescribed uniaxial stretch F = diag(1 + e, 1, 1),
    reached in one step, must write the closed-form values of the rate form at every point (F is
    exact for a linear displacement at every point, surface included), also through a Block_Data
-   compute of a component.
+   compute of a component. A tensor asked together with its components (also by a second stream
+   into the same file) writes each of the nine names once.
 2. Keys Peridigm ignores where its decks carry them: Hourglass Coefficient on Elastic and Pals,
    the top-level Enable Bond-Associated Hypoelastic Model (accepted, and still checked: a
    negative coefficient is an error).
@@ -39,7 +40,7 @@ LAMBDA = E * NU / ((1 + NU) * (1 - 2 * NU))
 MU = E / (2 * (1 + NU))
 
 
-def cube(material, extra_top='', outputs='', computes=''):
+def cube(material, extra_top='', outputs='', computes='', more_outputs=''):
     ids = ' '.join(str(i) for i in range(1, 65))
     return f"""Peridigm:
 {extra_top}  Discretization:
@@ -89,7 +90,7 @@ def cube(material, extra_top='', outputs='', computes=''):
     Output Filename: cube
     Output Frequency: 1
     Output Variables:
-{outputs}"""
+{outputs}{more_outputs}"""
 
 
 def run(deck_text, name, args=()):
@@ -165,6 +166,32 @@ if r.returncode == 0:
         check(abs(got - want) < 1e-9 * stress_scale, 'Block_Data Maximum of Cauchy_StressXX')
     else:
         check(False, 'Max_Sxx is a global variable of the output')
+
+# A tensor and some of its components, also from a second stream into the same file: each
+# Exodus name once (the tensor's nine), with the tensor's values (the rate form's, as above).
+r_ratio = STRAIN / (1 + STRAIN)
+second = """  Output2:
+    Output Filename: cube
+    Output Frequency: 1
+    Output Variables:
+      Cauchy_StressYY: true
+      Cauchy_Stress: true
+"""
+r, d = run(cube(correspondence, outputs='      Cauchy_StressXX: true\n      Cauchy_Stress: true\n',
+                more_outputs=second), 'tensor_and_components')
+check(r.returncode == 0, 'a tensor asked with its components runs ' + r.stderr)
+if r.returncode == 0:
+    ds = netCDF4.Dataset(os.path.join(d, 'cube.e'))
+    names = [b''.join(n).decode().strip('\0').strip() for n in ds.variables['name_elem_var'][:]]
+    want = ['Cauchy_Stress' + a + b for a in 'XYZ' for b in 'XYZ']
+    check(sorted(names) == sorted(want) and len(set(names)) == len(names),
+          'each element variable name once: %s' % names)
+    for name, value in (('Cauchy_StressXX', (LAMBDA + 2 * MU) * r_ratio),
+                        ('Cauchy_StressYY', LAMBDA * r_ratio)):
+        if name in names:
+            got = np.array(ds.variables['vals_elem_var%deb1' % (names.index(name) + 1)][-1])
+            err = np.max(np.abs(got - value)) / ((LAMBDA + 2 * MU) * STRAIN)
+            check(err < 1e-9, '%s of the tensor = %.12g (max error / scale %.1e)' % (name, value, err))
 
 # ---- 2. keys Peridigm ignores ----------------------------------------------------------------
 for model in ('Elastic', 'Pals'):

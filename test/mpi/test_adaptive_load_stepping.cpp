@@ -3,12 +3,14 @@
 // and the adaptive run must then be that fixed-step run; a cut step with bonds breaking restarts
 // from the committed state (the same displacements and bond damage as a run that took the
 // smaller steps from the start); exhausted reductions stop with the documented error; Switch to
-// Verlet continues as a chained QuasiStatic + Verlet deck would.
+// Verlet continues as a chained QuasiStatic + Verlet deck would; an attempt whose residual is
+// not finite is a failed attempt (cut and retried), not a stop.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -17,10 +19,42 @@
 #include "app/Simulation.hpp"
 #include "core/Error.hpp"
 #include "deck/Deck.hpp"
+#include "materials/Elastic.hpp"
 #include "output/ExodusCompare.hpp"
 #include "solvers/QuasiStatic.hpp"
 
 namespace peridot {
+namespace {
+
+// A test double, registered in this test executable only: Peridigm's "Elastic" whose force
+// density is NaN at every point when the evaluation's time step (a load step's length) exceeds
+// Longest Finite Step, as a model whose update fails for too large an increment. At shorter
+// steps it is "Elastic" to the bit.
+class ElasticNonFiniteForLongSteps : public Elastic {
+ public:
+  explicit ElasticNonFiniteForLongSteps(ListReader& p)
+      : Elastic(p), longest_(p.positiveNumber("Longest Finite Step")) {}
+  void computeForce(const ModelState& s, const std::vector<int>& points) override {
+    Elastic::computeForce(s, points);
+    if (!(s.dt > longest_)) return;
+    for (int i : points)
+      if (i < s.topology->numOwned)
+        for (int d = 0; d < 3; ++d)
+          s.forceDensity[3 * i + d] = std::numeric_limits<double>::quiet_NaN();
+  }
+
+ private:
+  double longest_;
+};
+
+}  // namespace
+
+PERIDOT_REGISTER_MATERIAL("Test Elastic NonFinite For Long Steps", ElasticNonFiniteForLongSteps,
+                          "test double: Elastic with a NaN force density for load steps longer "
+                          "than Longest Finite Step",
+                          (std::vector<ParameterDoc>{
+                              {"Longest Finite Step", "positive number: the longest step"}}))
+
 namespace {
 
 std::unique_ptr<Simulation> makeSimulation(const std::string& yaml) {
@@ -317,6 +351,60 @@ TEST(AdaptiveLoadStepping, SwitchToVerletContinuesAsAChainedVerletRun) {
   EXPECT_EQ(gathered(*switched, "Displacement", 3), gathered(*reference, "Displacement", 3));
   EXPECT_EQ(gathered(*switched, "Velocity", 3), gathered(*reference, "Velocity", 3));
   EXPECT_EQ(brokenBonds(*switched), brokenBonds(*reference));
+}
+
+// The bar at 0.2% strain in the test double above with steps longer than `longest` NaN.
+std::string nonFiniteBar(double longest) {
+  std::ostringstream m;
+  m << "      Material Model: Test Elastic NonFinite For Long Steps\n      Density: 7800.0\n"
+       "      Young's Modulus: 200.0e9\n      Poisson's Ratio: 0.25\n"
+       "      Longest Finite Step: "
+    << longest << "\n";
+  const std::string value[3] = {"0.002*t*x", "0.0", "0.0"};
+  return testing::staticBarProblemWith(m.str(), value);
+}
+
+TEST(AdaptiveLoadStepping, ANonFiniteResidualIsAFailedAttemptThatIsCut) {
+  // One load step of length 1: its residual is NaN. Cut once, the halves (length 0.5) are
+  // finite and converge; the run must then be the plain Elastic run with the steps 0, 0.5, 1
+  // from the start, to the bit.
+  auto adaptive = makeSimulation(
+      nonFiniteBar(0.6) + quasiStatic("Number of Load Steps: 1", 10, adaptiveList(3, 3, false)));
+  ASSERT_EQ(runError([&] { adaptive->run(); }), "");
+  const auto& stats = adaptive->quasiStatic()->statistics();
+  EXPECT_EQ(stats.reductions, 1);
+  ASSERT_EQ(stats.attempts.size(), 3u);
+  EXPECT_FALSE(stats.attempts[0].converged);
+  EXPECT_EQ(stats.attempts[0].end, 1.0);
+  EXPECT_TRUE(stats.attempts[1].converged);
+  EXPECT_EQ(stats.attempts[1].end, 0.5);
+  EXPECT_TRUE(stats.attempts[2].converged);
+  EXPECT_EQ(adaptive->time(), 1.0);
+  auto plain =
+      makeSimulation(barProblem(0.002, 0.0) + quasiStatic(timeSteps({0.0, 0.5, 1.0}), 10, ""));
+  ASSERT_EQ(runError([&] { plain->run(); }), "");
+  const auto u = gathered(*adaptive, "Displacement", 3);
+  EXPECT_EQ(u, gathered(*plain, "Displacement", 3));
+  double largest = 0;
+  for (double v : u) largest = std::max(largest, std::fabs(v));
+  EXPECT_GT(largest, 0.0) << "the bar must have been pulled";
+}
+
+TEST(AdaptiveLoadStepping, NonFiniteResidualsUntilTheCutsAreExhaustedStopWithTheDocumentedError) {
+  // Steps longer than 0.2 are NaN; one reduction allowed: [0, 1] and [0, 0.5] fail, and the run
+  // stops with the exhausted error saying why the last attempt failed.
+  auto sim = makeSimulation(nonFiniteBar(0.2) +
+                            quasiStatic("Number of Load Steps: 1", 10, adaptiveList(1, 1, false)));
+  const std::string message = runError([&] { sim->run(); });
+  EXPECT_NE(message.find("QuasiStatic: load step 1 (time 0 -> 0.5) did not converge after 1"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("the residual is not finite"), std::string::npos) << message;
+  EXPECT_EQ(sim->quasiStatic()->statistics().attempts.size(), 2u);
+  // Without Adaptive Load-Stepping the same attempt stops the run at once, as before.
+  auto plain = makeSimulation(nonFiniteBar(0.2) + quasiStatic("Number of Load Steps: 1", 10, ""));
+  EXPECT_EQ(runError([&] { plain->run(); }),
+            "QuasiStatic: the residual is not finite (a force or displacement diverged)");
 }
 
 }  // namespace

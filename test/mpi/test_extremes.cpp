@@ -603,6 +603,68 @@ TEST(Extremes, CollapsedBodyStaysFinite) {
   }
 }
 
+// A motion every point follows by prescription is the user's, not the integration's: the
+// divergence check leaves prescribed components out. A 4^3 cube (spacing 1, horizon 1.75,
+// Fixed dt 0.56x the estimate) stretched along x to strain `strain` over 20 steps; `free`
+// leaves y and z unprescribed.
+std::string prescribedStretch(double strain, bool free) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "Peridigm:\n  Discretization:\n    Type: PdQuickGrid\n    NeighborhoodType: Spherical\n"
+       "    TensorProduct3DMeshGenerator:\n      X Origin: 0.0\n      Y Origin: 0.0\n"
+       "      Z Origin: 0.0\n      X Length: 4.0\n      Y Length: 4.0\n      Z Length: 4.0\n"
+       "      Number Points X: 4\n      Number Points Y: 4\n      Number Points Z: 4\n"
+       "  Materials:\n    M:\n      Material Model: Elastic\n      Density: 7800.0\n"
+       "      Young's Modulus: 200.0e9\n      Poisson's Ratio: 0.3\n"
+       "  Blocks:\n    B:\n      Block Names: block_1\n      Material: M\n      Horizon: 1.75\n"
+       "  Boundary Conditions:\n    All Node Set: \""
+    << idList(64) << "\"\n";
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < (free ? 1 : 3); ++a) {
+    d << "    U" << axes[a] << ":\n      Type: Prescribed Displacement\n      Node Set: All Node "
+      << "Set\n      Coordinate: " << axes[a] << "\n      Value: \""
+      << (a == 0 ? std::to_string(strain) + "*x*t/1.0e-3" : "0.0") << "\"\n";
+  }
+  d << "  Solver:\n    Final Time: 1.0e-3\n    Verlet:\n      Fixed dt: 5.0e-5\n";
+  return d.str();
+}
+
+TEST(Extremes, AFullyPrescribedStretchIsNotADivergence) {
+  // Strain 10: the reactions on the points (their accelerations) exceed the check's bound of
+  // one horizon per step from step 17 on (the check stopped this run when it counted them).
+  const double strain = 10.0;
+  auto sim = makeSimulation(prescribedStretch(strain, false));
+  std::string message;
+  try {
+    sim->run();
+  } catch (const RunError& e) {
+    message = e.what();
+  }
+  ASSERT_EQ(message, "");
+  EXPECT_EQ(sim->numSteps(), 20);
+  // The prescribed end state, u = (strain x, 0, 0), at every point.
+  const double* x = sim->fields().node("Model_Coordinates", 3);
+  const double* u = sim->fields().node("Displacement", 3);
+  for (int i = 0; i < sim->topology().numOwned; ++i) {
+    EXPECT_NEAR(u[3 * i], strain * x[3 * i], 1e-12 * strain * 4.0) << i;
+    EXPECT_EQ(u[3 * i + 1], 0.0) << i;
+    EXPECT_EQ(u[3 * i + 2], 0.0) << i;
+  }
+}
+
+TEST(Extremes, AFreeComponentOfAPrescribedStretchIsStillChecked) {
+  // The same cube at strain 100 with y and z free: the lateral forces on the free components
+  // would carry points across their horizon in one step; the check stops the run.
+  auto sim = makeSimulation(prescribedStretch(100.0, true));
+  std::string message;
+  try {
+    sim->run();
+  } catch (const RunError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("the run diverged at step"), std::string::npos) << message;
+}
+
 // --- rigid motion ----------------------------------------------------------------------------
 
 // A cube spinning about z turns one full revolution at three speeds: a rim speed of 0.7 of the

@@ -14,6 +14,7 @@
 #include "core/Registry.hpp"
 #include "damage/DamageModel.hpp"
 #include "deck/Deck.hpp"
+#include "deck/OutputVariables.hpp"
 #include "deck/PeridigmVocabulary.hpp"
 #include "deck/RunConfig.hpp"
 #include "materials/MaterialModel.hpp"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -21,12 +22,13 @@ constexpr double kDt = 0.1, kHorizon = 2.0;
 
 // Runs `steps` checks with a_x(point, step) from `field`; returns the step of the RunError
 // (-1 when none) and its message.
+// `prescribed`: 3 per point, non-zero where the component is prescribed (null: none).
 long long firstFailure(const std::function<double(int, long long)>& field, long long steps,
-                       std::string* message = nullptr) {
+                       std::string* message = nullptr, const double* prescribed = nullptr) {
   std::vector<double> horizon(kPoints, kHorizon);
   DivergenceMonitor monitor(
       kPoints, horizon.data(), [](int i) { return "point " + std::to_string(i + 1); }, kDt,
-      kDt / 2.1, MPI_COMM_SELF);
+      kDt / 2.1, MPI_COMM_SELF, prescribed);
   std::vector<double> a(3 * kPoints, 0.0);
   for (long long n = 0; n <= steps; ++n) {
     for (int i = 0; i < kPoints; ++i) a[3 * i] = field(i, n);
@@ -90,6 +92,31 @@ TEST(DivergenceMonitor, LetsAStableHighModeOscillateAndBeat) {
     return amplitude(1e-3) * envelope * (n % 2 ? -1.0 : 1.0);
   };
   EXPECT_EQ(firstFailure(beat, 1000), -1);
+}
+
+TEST(DivergenceMonitor, PrescribedComponentsAreLeftOut) {
+  // The bound (q = 2 at point 3) and sign-reversing growth (point 2), both along x: each stops
+  // the run when x is free, and neither when x of that point is prescribed; a prescribed y or
+  // z does not hide a free x.
+  auto beyondBound = [](int i, long long) { return i == 2 ? amplitude(2.0) : 0.0; };
+  auto growing = [](int i, long long n) {
+    return i == 1 ? amplitude(1e-7) * std::pow(-1.25, static_cast<double>(n)) : 0.0;
+  };
+  std::vector<double> none(3 * kPoints, 0.0), xOf3(none), yzOf3(none), xOf2(none), all(none);
+  xOf3[3 * 2] = 1.0;
+  yzOf3[3 * 2 + 1] = yzOf3[3 * 2 + 2] = 1.0;
+  xOf2[3 * 1] = 1.0;
+  std::fill(all.begin(), all.end(), 1.0);
+  EXPECT_EQ(firstFailure(beyondBound, 50, nullptr, none.data()), 0);
+  EXPECT_EQ(firstFailure(beyondBound, 50, nullptr, yzOf3.data()), 0);
+  EXPECT_EQ(firstFailure(beyondBound, 50, nullptr, xOf3.data()), -1);
+  EXPECT_EQ(firstFailure(beyondBound, 50, nullptr, all.data()), -1);
+  const long long step = firstFailure(growing, 200, nullptr, none.data());
+  EXPECT_GT(step, 0);
+  EXPECT_LT(step, 100);
+  EXPECT_EQ(firstFailure(growing, 200, nullptr, xOf3.data()), step);
+  EXPECT_EQ(firstFailure(growing, 200, nullptr, xOf2.data()), -1);
+  EXPECT_EQ(firstFailure(growing, 200, nullptr, all.data()), -1);
 }
 
 }  // namespace
