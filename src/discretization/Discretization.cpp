@@ -71,6 +71,10 @@ BondFilter readBondFilter(ListReader r, const std::string& name) {
 }
 
 bool BondFilter::cuts(const double* p, const double* q) const {
+  // The same answer from either end: a bond is in both ends' lists or in neither (the search
+  // asks from each end; a cut seen from one end only would leave a one-sided bond). The ends are
+  // taken in one fixed order, so the rounding of the test below is the same both ways.
+  if (std::lexicographical_compare(q, q + 3, p, p + 3)) std::swap(p, q);
   if (kind == Kind::ExodusMesh) return facets->cuts(p, q);
   const double* origin = kind == Kind::Disk ? center : lowerLeftCorner;
   const double dp = (p[0] - origin[0]) * normal[0] + (p[1] - origin[1]) * normal[1] +
@@ -249,7 +253,8 @@ DiscretizationConfig readDiscretizationConfig(ListReader r) {
   c.influenceFunction = r.has("Influence Function") ? r.string("Influence Function") : "One";
   c.partialVolumes = r.has("Partial Volumes") && r.boolean("Partial Volumes", false);
   c.compactBonds = r.choice("Bond Storage", {"Fast", "Compact"}, "Fast") == "Compact";
-  c.halfBondList = r.boolean("Half Bond List", true);
+  // Compact storage is asked for memory: the half list's pairs (4.5 bytes a bond) only on request.
+  c.halfBondList = r.boolean("Half Bond List", !c.compactBonds);
   {
     const auto& f = c.influenceFunction;
     if (f != "One" && f != "Parabolic Decay" && f != "Gaussian" && f != "Conical" &&

@@ -88,8 +88,8 @@ struct DiscretizationConfig {
   // `Bond Storage: "Compact"` (Peridot extension): models that can compute |xi| in their loop do,
   // and a fused critical stretch keeps 1-byte broken flags; "Fast" (default) stores both.
   bool compactBonds = false;
-  // `Half Bond List` (Peridot extension, default true): bond-based models walk each bond once
-  // where the scene allows it (ModelEvaluator::setHalfBondListAllowed); false: both ends.
+  // `Half Bond List` (Peridot extension; default true, false with Compact storage): bond-based
+  // models walk each bond once where the scene allows it (ModelEvaluator::setHalfBondListAllowed).
   bool halfBondList = true;
   std::string generatorPath;
   PeriodicBox periodic;  // bonds across periodic faces reach the images of the points

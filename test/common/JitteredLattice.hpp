@@ -54,8 +54,10 @@ struct JitteredLattice {
   }
 
   // One block over the owned points, then the evaluator (planar: thickness 1), initialized.
+  // halfList: whether a bond-based block may walk the half bond list (a run's default).
   void addBlock(std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage,
-                const std::string& influence, bool fuse) {
+                const std::string& influence, bool fuse, bool halfList = true,
+                bool allowCompact = false) {
     Block b;
     b.name = "block_1";
     b.id = 1;
@@ -66,6 +68,8 @@ struct JitteredLattice {
     evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, influence, timers);
     if (cloud.dimension == 2) evaluator->setPlanar(1.0);
     evaluator->setFuseCriticalStretch(fuse);
+    evaluator->setHalfBondListAllowed(halfList);
+    evaluator->setCompactDamageAllowed(allowCompact);
     evaluator->initialize();
   }
 };

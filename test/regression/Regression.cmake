@@ -38,13 +38,16 @@ else()
   message(WARNING "Peridigm cases not found at ${PERIDOT_CASES_DIR}: regression tests skipped")
 endif()
 
-# Nodal results must not depend on the rank count, to the bit.
+# Nodal results must not depend on the rank count, to the bit. An optional last argument is a
+# regular expression every run's output must match (that the code path under test ran).
 function(peridot_identical name case_dir deck output comp all_ids)
+  set(expect_log "${ARGV6}")
   add_test(NAME identical_${name}
     COMMAND ${CMAKE_COMMAND}
       -DCASE_DIR=${case_dir} -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/identical/${name}
       -DDECK=${deck} -DOUTPUT=${output} -DCOMP=${CMAKE_CURRENT_SOURCE_DIR}/regression/${comp}
       "-DNPS=1;2;3;4" -DMPIEXEC=${MPIEXEC_EXECUTABLE} -DALL_IDS=${all_ids}
+      "-DEXPECT_LOG=${expect_log}"
       -DPERIDOT=$<TARGET_FILE:peridot> -DPERIDOT_DIFF=$<TARGET_FILE:peridot-diff>
       -P ${CMAKE_CURRENT_SOURCE_DIR}/regression/RunIdentical.cmake)
   set_tests_properties(identical_${name} PROPERTIES
@@ -54,8 +57,13 @@ endfunction()
 if(EXISTS "${PERIDOT_CASES_DIR}")
   peridot_identical(WaveInBar ${PERIDOT_CASES_DIR}/WaveInBar WaveInBar.xml WaveInBar.e exact_wave.comp 0)
 endif()
+# PMB + critical stretch over the half bond list (each bond once; ghost rows walked in curve order).
 peridot_identical(DamageCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube DamageCube.yaml
-                  DamageCube.e exact.comp 10000)
+                  DamageCube.e exact.comp 10000 "Bond loop: each bond once")
+# The same with normalized PMB, computed |xi| and broken-bond flags (Bond Storage: Compact).
+peridot_identical(DamageCubeCompact ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube
+                  DamageCubeCompact.yaml DamageCubeCompact.e exact.comp 10000
+                  "Bond loop: each bond once")
 # Partial volumes (bond weights from cell-horizon overlaps, PMB + damage): bitwise equal too.
 peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PartialVolumes
                   PartialVolumes.yaml PartialVolumes.e exact.comp 10000)

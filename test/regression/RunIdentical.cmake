@@ -1,7 +1,7 @@
 # Runs a deck at several rank counts and requires every output to equal the 1-rank output to
 # the bit (peridot-diff with zero tolerances). Variables: CASE_DIR, WORK_DIR, DECK, OUTPUT,
 # COMP, NPS (list), MPIEXEC, PERIDOT, PERIDOT_DIFF, ALL_IDS (optional: write all_points.txt
-# with ids 1..ALL_IDS).
+# with ids 1..ALL_IDS), EXPECT_LOG (optional: a regular expression every run's output matches).
 set(reference "")
 foreach(np ${NPS})
   set(dir "${WORK_DIR}/np${np}")
@@ -18,6 +18,9 @@ foreach(np ${NPS})
                   WORKING_DIRECTORY "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "peridot failed at ${np} ranks (${rc}):\n${out}\n${err}")
+  endif()
+  if(EXPECT_LOG AND NOT out MATCHES "${EXPECT_LOG}")
+    message(FATAL_ERROR "the run at ${np} ranks did not print \"${EXPECT_LOG}\":\n${out}")
   endif()
   if(reference STREQUAL "")
     set(reference "${dir}/${OUTPUT}")

@@ -38,8 +38,10 @@ struct Lattice {
 
   // storeLengths: the default `Bond Storage: "Fast"` (|xi| stored for every model); these tests
   // mostly run the lean forms of "Compact".
+  // halfList: whether bond-based runs may walk the half bond list (the default of runs); the
+  // tests of the full lists' storage forms turn it off.
   Lattice(int n, std::shared_ptr<MaterialModel> material, std::shared_ptr<DamageModel> damage,
-          bool allowCompact, bool storeLengths = false) {
+          bool allowCompact, bool storeLengths = false, bool halfList = true) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
     long long id = 0;
@@ -75,6 +77,7 @@ struct Lattice {
     evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
     evaluator->setCompactDamageAllowed(allowCompact);
     evaluator->setStoreBondLengths(storeLengths);
+    evaluator->setHalfBondListAllowed(halfList);
     evaluator->initialize();
   }
   // y = x + a stretch along x growing with `step` plus a fixed random field.
@@ -111,51 +114,55 @@ std::shared_ptr<MaterialModel> pmb() {
 // PMB + critical stretch over several steps that break bonds: the compact run (no |xi| array,
 // 1-byte flags) and the float run give the same forces and node damage to the bit.
 TEST(LeanBonds, CompactDamageRunMatchesFloatDamageBitForBit) {
-  Lattice compact(6, pmb(), criticalStretch(0.01), true);
-  Lattice full(6, pmb(), criticalStretch(0.01), false);
-  EXPECT_TRUE(compact.evaluator->compactDamage());
-  EXPECT_FALSE(full.evaluator->compactDamage());
-  EXPECT_EQ(compact.evaluator->state().bondLength, nullptr);
-  EXPECT_EQ(compact.evaluator->state().bondDamage, nullptr);
-  ASSERT_NE(compact.evaluator->state().bondBroken, nullptr);
-  ASSERT_NE(full.evaluator->state().bondDamage, nullptr);
-  // 5 bytes a bond less than 4 (float damage): the float run keeps no |xi| either.
-  EXPECT_EQ(full.evaluator->state().bondLength, nullptr);
-  const auto bonds = static_cast<std::size_t>(compact.topology.numBonds());
-  EXPECT_EQ(full.fields->bytesAllocated() - compact.fields->bytesAllocated(), 3 * bonds);
+  for (const bool half : {false, true}) {
+    SCOPED_TRACE(half ? "half bond list" : "full bond lists");
+    Lattice compact(6, pmb(), criticalStretch(0.01), true, false, half);
+    Lattice full(6, pmb(), criticalStretch(0.01), false, false, half);
+    ASSERT_EQ(compact.evaluator->usesHalfBondList(), half);
+    EXPECT_TRUE(compact.evaluator->compactDamage());
+    EXPECT_FALSE(full.evaluator->compactDamage());
+    EXPECT_EQ(compact.evaluator->state().bondLength, nullptr);
+    EXPECT_EQ(compact.evaluator->state().bondDamage, nullptr);
+    ASSERT_NE(compact.evaluator->state().bondBroken, nullptr);
+    ASSERT_NE(full.evaluator->state().bondDamage, nullptr);
+    // 5 bytes a bond less than 4 (float damage): the float run keeps no |xi| either.
+    EXPECT_EQ(full.evaluator->state().bondLength, nullptr);
+    const auto bonds = static_cast<std::size_t>(compact.topology.numBonds());
+    EXPECT_EQ(full.fields->bytesAllocated() - compact.fields->bytesAllocated(), 3 * bonds);
 
-  double lastDamage = 0;
-  for (int step = 0; step <= 6; ++step) {
-    compact.deform(step);
-    full.deform(step);
-    compact.evaluator->evaluate(1.0);
-    full.evaluator->evaluate(1.0);
-    EXPECT_TRUE(sameBits(compact.force(), full.force())) << "step " << step;
-    EXPECT_TRUE(sameBits(compact.nodeDamage(), full.nodeDamage())) << "step " << step;
-    double sum = 0;
-    for (double d : full.nodeDamage()) sum += d;
-    lastDamage = sum;
+    double lastDamage = 0;
+    for (int step = 0; step <= 6; ++step) {
+      compact.deform(step);
+      full.deform(step);
+      compact.evaluator->evaluate(1.0);
+      full.evaluator->evaluate(1.0);
+      EXPECT_TRUE(sameBits(compact.force(), full.force())) << "step " << step;
+      EXPECT_TRUE(sameBits(compact.nodeDamage(), full.nodeDamage())) << "step " << step;
+      double sum = 0;
+      for (double d : full.nodeDamage()) sum += d;
+      lastDamage = sum;
+    }
+    // The scene does break bonds (else the flags were never written).
+    EXPECT_GT(lastDamage, 0.0);
+    // Evaluations that must not break bonds (updateDamage false) read the flags alike.
+    compact.deform(9);
+    full.deform(9);
+    compact.evaluator->evaluate(1.0, false);
+    full.evaluator->evaluate(1.0, false);
+    EXPECT_TRUE(sameBits(compact.force(), full.force()));
+    EXPECT_TRUE(sameBits(compact.nodeDamage(), full.nodeDamage()));
+    // Stored energy reads both forms alike.
+    std::vector<double> wc(compact.topology.numOwned), wf(full.topology.numOwned);
+    compact.evaluator->storedEnergyDensity(wc.data());
+    full.evaluator->storedEnergyDensity(wf.data());
+    EXPECT_TRUE(sameBits(wc, wf));
   }
-  // The scene does break bonds (else the flags were never written).
-  EXPECT_GT(lastDamage, 0.0);
-  // Evaluations that must not break bonds (updateDamage false) read the flags alike.
-  compact.deform(9);
-  full.deform(9);
-  compact.evaluator->evaluate(1.0, false);
-  full.evaluator->evaluate(1.0, false);
-  EXPECT_TRUE(sameBits(compact.force(), full.force()));
-  EXPECT_TRUE(sameBits(compact.nodeDamage(), full.nodeDamage()));
-  // Stored energy reads both forms alike.
-  std::vector<double> wc(compact.topology.numOwned), wf(full.topology.numOwned);
-  compact.evaluator->storedEnergyDensity(wc.data());
-  full.evaluator->storedEnergyDensity(wf.data());
-  EXPECT_TRUE(sameBits(wc, wf));
 }
 
 // The loop's own |xi| against a stored array the test fills independently: the force with
 // state.bondLength set is the force without, to the bit.
 TEST(LeanBonds, ComputedBondLengthEqualsStoredBondLength) {
-  Lattice lean(5, pmb(), criticalStretch(0.01), false);
+  Lattice lean(5, pmb(), criticalStretch(0.01), false, false, false);
   lean.deform(4);
   lean.evaluator->evaluate(1.0, false);
   const std::vector<double> computed = lean.force();
@@ -187,12 +194,9 @@ TEST(LeanBonds, ComputedBondLengthEqualsStoredBondLength) {
   EXPECT_TRUE(sameBits(a, b));
 }
 
-// The default storage ("Fast") keeps |xi| for PMB too, and gives the lean run's bits.
-TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
-  Lattice fast(5, pmb(), criticalStretch(0.01), false, true);
-  Lattice lean(5, pmb(), criticalStretch(0.01), false, false);
-  ASSERT_NE(fast.evaluator->state().bondLength, nullptr);
-  EXPECT_EQ(lean.evaluator->state().bondLength, nullptr);
+namespace {
+// Four steps that break bonds: the same forces and node damage, to the bit.
+void runAlike(Lattice& fast, Lattice& lean) {
   for (int step = 1; step <= 4; ++step) {
     fast.deform(step);
     lean.deform(step);
@@ -200,6 +204,30 @@ TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
     lean.evaluator->evaluate(1.0);
     EXPECT_EQ(fast.force(), lean.force()) << "step " << step;
     EXPECT_EQ(fast.nodeDamage(), lean.nodeDamage()) << "step " << step;
+  }
+}
+}  // namespace
+
+// The default storage ("Fast") keeps |xi| for PMB too, and gives the lean run's bits: in the full
+// lists' loop, and in the half list's (whose pairs keep |xi| themselves then).
+TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
+  for (const bool half : {false, true}) {
+    SCOPED_TRACE(half ? "half bond list" : "full bond lists");
+    Lattice fast(5, pmb(), criticalStretch(0.01), false, true, half);
+    Lattice lean(5, pmb(), criticalStretch(0.01), false, false, half);
+    ASSERT_EQ(fast.evaluator->usesHalfBondList(), half);
+    ASSERT_EQ(lean.evaluator->usesHalfBondList(), half);
+    if (half) {
+      // The pairs hold |xi|; the full lists need none.
+      EXPECT_EQ(fast.evaluator->state().bondLength, nullptr);
+      EXPECT_EQ(fast.evaluator->halfBondList()->pairLength.size(),
+                static_cast<std::size_t>(fast.evaluator->halfBondList()->numPairs()));
+      EXPECT_TRUE(lean.evaluator->halfBondList()->pairLength.empty());
+    } else {
+      ASSERT_NE(fast.evaluator->state().bondLength, nullptr);
+    }
+    EXPECT_EQ(lean.evaluator->state().bondLength, nullptr);
+    runAlike(fast, lean);
   }
 }
 

@@ -1,0 +1,185 @@
+// The half bond list (neighbor/HalfBondList.hpp) and the bond-based force over it
+// (materials/HalfPairForce.cpp): every bond once, with the right full-list entries, in curve
+// order; the same forces as the full lists' loop to rounding (another summation order) and the
+// same broken bonds to the bit; only where the scene allows it. Rank-count identity is checked
+// by the identical_DamageCube test (1 to 4 ranks, the run's log says the half list ran).
+#include <gtest/gtest.h>
+
+#include <Teuchos_ParameterList.hpp>
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "JitteredLattice.hpp"
+#include "Materials.hpp"
+#include "damage/CriticalStretch.hpp"
+#include "neighbor/HalfBondList.hpp"
+#include "parallel/Partition.hpp"
+
+using namespace peridot;
+using peridot::testing::JitteredLattice;
+
+namespace {
+
+std::shared_ptr<DamageModel> criticalStretch(double sc) {
+  Teuchos::ParameterList p;
+  p.set("Critical Stretch", sc);
+  ListReader r(p, "Damage Models -> D");
+  return std::make_shared<CriticalStretch>(r);
+}
+
+// y = x + a stretch along x that grows with `step`, plus a fixed random-looking field.
+void deform(JitteredLattice& L, int step) {
+  const double* x = L.fields->node("Model_Coordinates", 3);
+  double* y = L.fields->node("Coordinates", 3);
+  for (int p = 0; p < L.topology.numOwned; ++p)
+    for (int d = 0; d < 3; ++d)
+      y[3 * p + d] = x[3 * p + d] + (d == 0 ? 0.004 * step * x[3 * p] : 0.0) +
+                     0.02 * std::sin(7.0 * p + 3.0 * d);
+}
+
+std::vector<double> force(const JitteredLattice& L) {
+  const double* f = L.fields->nodeField("Force_Density").data;
+  return std::vector<double>(f, f + 3 * L.topology.numOwned);
+}
+
+std::vector<double> nodeDamage(const JitteredLattice& L) {
+  std::vector<double> d(L.topology.numOwned);
+  L.evaluator->nodeDamage(d.data());
+  return d;
+}
+
+// The bond damage the full lists hold (either form), as floats.
+std::vector<float> bondDamage(const JitteredLattice& L) {
+  const ModelState& s = L.evaluator->state();
+  std::vector<float> d(static_cast<std::size_t>(L.topology.numBonds()));
+  for (std::size_t b = 0; b < d.size(); ++b)
+    d[b] = s.bondDamage ? s.bondDamage[b] : (s.bondBroken ? s.bondBroken[b] : 0.0f);
+  return d;
+}
+
+// max |a - b| over max |b|.
+double relativeDifference(const std::vector<double>& a, const std::vector<double>& b) {
+  double diff = 0, scale = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    diff = std::max(diff, std::fabs(a[k] - b[k]));
+    scale = std::max(scale, std::fabs(b[k]));
+  }
+  return diff / scale;
+}
+
+}  // namespace
+
+TEST(HalfBondList, EveryBondOnceWithItsFullListEntriesInCurveOrder) {
+  JitteredLattice L(6, false, false, 5);
+  const Topology& t = L.topology;
+  HalfBondList h;
+  ASSERT_TRUE(buildHalfBondList(t, h));
+  EXPECT_EQ(2 * h.numPairs(), t.numBonds());
+  const auto key = [&](int k) {
+    return std::make_pair(mortonKey(&t.referencePosition[3 * k], t.curveLo, t.curveHi),
+                          t.overlapGlobalId[k]);
+  };
+  std::set<std::pair<long long, long long>> seen;
+  for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
+    const int a = h.rowPoint[r];
+    if (r > 0) {
+      EXPECT_LT(key(h.rowPoint[r - 1]), key(a)) << "rows out of curve order at " << r;
+    }
+    long long previousId = -1;
+    for (std::int64_t p = h.rowPairOffsets[r]; p < h.rowPairOffsets[r + 1]; ++p) {
+      const int b = h.pairPoint[p];
+      EXPECT_LT(key(a), key(b)) << "a pair belongs to its earlier end's row";
+      // Within a row, pairs in global-id order (the order of the row's own force sum).
+      EXPECT_LT(previousId, t.overlapGlobalId[b]);
+      previousId = t.overlapGlobalId[b];
+      // Its entry in the full lists, and the other end's entry.
+      const std::int64_t e = h.fullEntry(t, r, p);
+      ASSERT_EQ(t.neighbors[e], b);
+      ASSERT_EQ(t.neighbors[t.bondOffsets[b] + h.pairMirrorSlot[p]], a);
+      const long long i = t.overlapGlobalId[a], j = t.overlapGlobalId[b];
+      EXPECT_TRUE(seen.insert({std::min(i, j), std::max(i, j)}).second) << "a bond twice";
+    }
+  }
+  EXPECT_EQ(static_cast<std::int64_t>(seen.size()), h.numPairs());
+}
+
+// PMB and normalized PMB with the fused critical stretch, float damage and broken-bond flags,
+// over steps that break bonds: the half list's force is the full lists' to rounding, and the
+// same bonds break in both (the same stretch test), to the bit.
+TEST(HalfBondList, ForceMatchesTheFullListsAndTheSameBondsBreak) {
+  for (const char* model : {"Elastic Bond Based", "Normalized PMB"})
+    for (const bool compact : {false, true}) {
+      SCOPED_TRACE(std::string(model) + (compact ? ", flags" : ", float damage"));
+      JitteredLattice half(6, false, false, 9), full(6, false, false, 9);
+      half.addBlock(peridot::testing::material(model, "", 1.0e9), criticalStretch(0.01), "One",
+                    true, true, compact);
+      full.addBlock(peridot::testing::material(model, "", 1.0e9), criticalStretch(0.01), "One",
+                    true, false, compact);
+      ASSERT_TRUE(half.evaluator->usesHalfBondList());
+      ASSERT_FALSE(full.evaluator->usesHalfBondList());
+      ASSERT_EQ(half.evaluator->compactDamage(), compact);
+      double broken = 0;
+      for (int step = 0; step <= 6; ++step) {
+        deform(half, step);
+        deform(full, step);
+        half.evaluator->evaluate(1.0);
+        full.evaluator->evaluate(1.0);
+        EXPECT_LT(relativeDifference(force(half), force(full)), 1e-13) << "step " << step;
+        EXPECT_EQ(bondDamage(half), bondDamage(full)) << "step " << step;
+        EXPECT_EQ(nodeDamage(half), nodeDamage(full)) << "step " << step;
+        broken = 0;
+        for (float d : bondDamage(full)) broken += d;
+      }
+      EXPECT_GT(broken, 0.0);  // the scene breaks bonds
+      EXPECT_LT(broken, static_cast<double>(full.topology.numBonds()));
+    }
+}
+
+// A solver that rejects a trial restores the bond damage: the half list reads it again.
+TEST(HalfBondList, RestoredDamageIsReadAgain) {
+  JitteredLattice half(5, false, false, 2), full(5, false, false, 2);
+  half.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9), criticalStretch(0.01),
+                "One", true, true);
+  full.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9), criticalStretch(0.01),
+                "One", true, false);
+  ASSERT_TRUE(half.evaluator->usesHalfBondList());
+  ModelEvaluator::DamageSnapshot savedHalf, savedFull;
+  half.evaluator->saveDamage(savedHalf);
+  full.evaluator->saveDamage(savedFull);
+  deform(half, 6);
+  deform(full, 6);
+  half.evaluator->evaluate(1.0);  // breaks bonds
+  full.evaluator->evaluate(1.0);
+  double broken = 0;
+  for (float d : bondDamage(half)) broken += d;
+  ASSERT_GT(broken, 0.0);
+  half.evaluator->restoreDamage(savedHalf);
+  full.evaluator->restoreDamage(savedFull);
+  half.evaluator->evaluate(1.0, false);  // at the same state, nothing broken
+  full.evaluator->evaluate(1.0, false);
+  EXPECT_LT(relativeDifference(force(half), force(full)), 1e-13);
+  EXPECT_EQ(bondDamage(half), bondDamage(full));
+}
+
+// Where a pair's force is not the same read from either end, or damage might differ between a
+// bond's two entries, the full lists' loop runs.
+TEST(HalfBondList, OnlyWhereTheSceneAllowsIt) {
+  const auto uses = [](const char* model, const char* influence, bool varyingHorizon, bool fuse,
+                       bool damage) {
+    JitteredLattice L(4, false, varyingHorizon, 1);
+    L.addBlock(
+        peridot::testing::material(model, "", 1.0e9, std::string(model) == "Elastic" ? 0.25 : -1),
+        damage ? criticalStretch(0.01) : nullptr, influence, fuse);
+    return L.evaluator->usesHalfBondList();
+  };
+  EXPECT_TRUE(uses("Elastic Bond Based", "One", false, true, true));
+  EXPECT_TRUE(uses("Elastic Bond Based", "One", false, true, false));
+  EXPECT_TRUE(uses("Normalized PMB", "One", false, true, true));
+  EXPECT_FALSE(uses("Elastic Bond Based", "Conical", false, true, true));  // omega per bond
+  EXPECT_FALSE(uses("Elastic Bond Based", "One", true, true, true));       // one-sided bonds
+  EXPECT_FALSE(uses("Elastic Bond Based", "One", false, false, true));     // a separate pass
+  EXPECT_FALSE(uses("Elastic", "One", false, true, true));                 // state-based
+}
