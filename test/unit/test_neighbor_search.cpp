@@ -225,4 +225,52 @@ TEST(NeighborSearchByCandidate, WrongCountsAreRefused) {
 }
 
 }  // namespace
+// A bond filter gives the same answer from either end of a bond (the search asks from each end,
+// and a cut seen from one end only would leave a one-sided bond): segments crossing a tilted
+// rectangle and disk close to their edges, where the hit point's rounding decides.
+TEST(BondFilters, CutTheSameFromEitherEnd) {
+  BondFilter plane;
+  plane.kind = BondFilter::Kind::RectangularPlane;
+  const double n[3] = {0.36, 0.48, 0.8};  // unit
+  const double bottom[3] = {0.8, -0.6, 0.0};
+  for (int d = 0; d < 3; ++d) {
+    plane.normal[d] = n[d];
+    plane.bottomUnitVector[d] = bottom[d];
+    plane.lowerLeftCorner[d] = 0.1 * (d + 1);
+  }
+  plane.bottomLength = 0.7;
+  plane.sideLength = 0.3;
+  BondFilter disk = plane;
+  disk.kind = BondFilter::Kind::Disk;
+  for (int d = 0; d < 3; ++d) disk.center[d] = plane.lowerLeftCorner[d];
+  disk.radius = 0.3;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double side[3] = {n[1] * bottom[2] - n[2] * bottom[1], n[2] * bottom[0] - n[0] * bottom[2],
+                          n[0] * bottom[1] - n[1] * bottom[0]};
+  int differ = 0, cut = 0;
+  for (const BondFilter* f : {&plane, &disk})
+    for (int k = 0; k < 200000; ++k) {
+      // A point on the filter's edge (a corner side, or the disk's rim), then a short bond
+      // through it.
+      double on[3];
+      const double t = 0.5 * (u(rng) + 1.0);
+      for (int d = 0; d < 3; ++d)
+        on[d] = f == &plane ? plane.lowerLeftCorner[d] + t * plane.bottomLength * bottom[d]
+                            : disk.center[d] + disk.radius * (std::cos(7 * t) * bottom[d] +
+                                                              std::sin(7 * t) * side[d]);
+      double p[3], q[3];
+      for (int d = 0; d < 3; ++d) {
+        const double dir = u(rng) * 1e-3;
+        p[d] = on[d] + dir + 1e-3 * n[d];
+        q[d] = on[d] - dir - 1e-3 * n[d];
+      }
+      const bool pq = f->cuts(p, q), qp = f->cuts(q, p);
+      differ += pq != qp;
+      cut += pq;
+    }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(cut, 0);
+}
+
 }  // namespace peridot
