@@ -152,7 +152,7 @@ void PMBHalfBondListFusedCriticalStretch(benchmark::State& state) {
     state.SkipWithError("no half bond list");
     return;
   }
-  half.pairLength.resize(half.pairPoint.size());
+  half.pairLength.assign(static_cast<std::size_t>(half.numPairs() + HalfBondList::kPadding), 1.0);
   for (std::size_t r = 0; r < half.rowPoint.size(); ++r)
     for (std::int64_t p = half.rowPairOffsets[r]; p < half.rowPairOffsets[r + 1]; ++p)
       half.pairLength[p] = referenceBondLength(st.x, half.rowPoint[r], half.pairPoint[p]);

@@ -207,7 +207,8 @@ void ModelEvaluator::initialize() {
   halfBondsBuilt_ = half && buildHalfBondList(topology_, halfBonds_);
   if (halfBondsBuilt_) {
     if (storeBondLengths_) {
-      halfBonds_.pairLength.resize(halfBonds_.pairPoint.size());
+      halfBonds_.pairLength.assign(
+          static_cast<std::size_t>(halfBonds_.numPairs() + HalfBondList::kPadding), 1.0);
       for (std::size_t r = 0; r < halfBonds_.rowPoint.size(); ++r)
         for (std::int64_t p = halfBonds_.rowPairOffsets[r]; p < halfBonds_.rowPairOffsets[r + 1];
              ++p)
@@ -223,19 +224,27 @@ void ModelEvaluator::bondDamageRewritten() {
 }
 
 bool ModelEvaluator::halfBondListApplies() const {
-  // One block (its force loop then covers every pair of the rank's points), a material that
-  // walks pairs, and a pair force that is the same bits read from either end: the linear law,
-  // omega = 1, bonds within both horizons, and bond damage that only a fused critical stretch
-  // writes (it breaks both entries of a bond together; a separate pass, or initial damage, might
+  // Every block with the same material instance (one force loop then covers every pair of the
+  // rank's points: the deck's blocks that share a material entry) that walks pairs, and a pair
+  // force that is the same bits read from either end: the linear law, omega = 1, bonds within
+  // both horizons, and bond damage that only a fused critical stretch writes, the same for every
+  // block (it breaks both entries of a bond together; a separate pass, or initial damage, might
   // leave the two ends apart). Every condition is the same on every rank.
-  if (!halfBondListAllowed_ || blocks_.size() != 1) return false;
-  const Block& b = blocks_.front();
+  if (!halfBondListAllowed_ || blocks_.empty()) return false;
+  const Block& first = blocks_.front();
   const bool influence = influenceFunction_ != "One" || partialVolumes_;  // stored per bond
-  if (!b.material->computesOverHalfBondList() || influence || !topology_.bondSides.empty())
+  if (!first.material->computesOverHalfBondList() || influence || !topology_.bondSides.empty())
     return false;
-  if (!b.damage) return true;
-  return b.damage->bondLaw().kind == BondLaw::Kind::Linear && fusesCriticalStretch(b) &&
-         !b.damage->initializesDamage();
+  for (const Block& b : blocks_) {
+    if (b.material != first.material || (b.damage == nullptr) != (first.damage == nullptr))
+      return false;
+    if (!b.damage) continue;
+    if (b.damage->bondLaw().kind != BondLaw::Kind::Linear || !fusesCriticalStretch(b) ||
+        b.damage->initializesDamage() ||
+        b.damage->fusableCriticalStretch() != first.damage->fusableCriticalStretch())
+      return false;
+  }
+  return true;
 }
 
 void ModelEvaluator::setThermal(const double* temperatureChange) {
@@ -323,6 +332,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
     breakable(b, false);
     b.material->computeForce(state_, b.points);
+    if (state_.halfBonds) break;  // the first block's loop walked every pair of every block
   }
   state_.halfBonds = nullptr;
   state_.breakableBondDamage = nullptr;

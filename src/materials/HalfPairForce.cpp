@@ -24,6 +24,10 @@ inline double mulAdd(double a, double b, double c) {
 
 template <bool kOverLength, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT>
 void halfLoop(const ModelState& s, const double* c) {
+  // The vector pass's width in pairs: 8 float damage values fill a 256-bit vector (the
+  // padding of the pair arrays allows up to kPadding).
+  constexpr int kLanes = 8;
+  static_assert(kLanes <= HalfBondList::kPadding, "a row's vector pass reads past its end");
   const Topology& t = *s.topology;
   HalfBondList& h = *s.halfBonds;
   const int n = t.numOwned;
@@ -52,18 +56,20 @@ void halfLoop(const ModelState& s, const double* c) {
   // result, so the bits are those of a scalar loop); the second adds them to the row's point
   // and subtracts them from the later ends, in order, and records the bonds that broke.
   thread_local std::vector<double> scratch;
-  thread_local std::vector<unsigned char> brokeNow;
+  thread_local std::vector<int>
+      brokeNow;  // int: a 1-byte type would make the vectors 32 pairs wide
   std::size_t longest = 0;
   const std::size_t rows = h.rowPoint.size();
   for (std::size_t r = 0; r < rows; ++r)
     longest = std::max(longest, static_cast<std::size_t>(rowPairs[r + 1] - rowPairs[r]));
+  longest = (longest + kLanes - 1) / kLanes * kLanes;
   if (scratch.size() < 4 * longest) scratch.resize(4 * longest);
   if (brokeNow.size() < longest) brokeNow.resize(longest);
   double* bufY0 = scratch.data();
   double* bufY1 = bufY0 + longest;
   double* bufY2 = bufY1 + longest;
   double* bufQ = bufY2 + longest;
-  unsigned char* broke = brokeNow.data();
+  int* broke = brokeNow.data();
 
   for (std::size_t r = 0; r < rows; ++r) {
     const int a = rowPoint[r];
@@ -72,9 +78,12 @@ void halfLoop(const ModelState& s, const double* c) {
     const double ca = c[a], va = volume[a];
     const std::int64_t p0 = rowPairs[r];
     const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    // In whole vectors: the lanes past the row's end compute what nobody reads and leave the
+    // damage they read unchanged.
+    const int lanes = (m + kLanes - 1) / kLanes * kLanes;
     int anyBroke = 0;
 #pragma omp simd reduction(| : anyBroke)
-    for (int k = 0; k < m; ++k) {
+    for (int k = 0; k < lanes; ++k) {
       const std::int64_t p = p0 + k;
       const int b = pairPoint[p];
       const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
@@ -88,7 +97,7 @@ void halfLoop(const ModelState& s, const double* c) {
       if constexpr (kBreak) {
         // The critical stretch as the separate damage pass applies it; no branch.
         const DamageT before = pairDamage[p];
-        const DamageT now = (dY - zb) / zb > criticalStretch ? DamageT(1) : before;
+        const DamageT now = k < m && (dY - zb) / zb > criticalStretch ? DamageT(1) : before;
         pairDamage[p] = now;
         broke[k] = now != before;
         anyBroke |= static_cast<int>(now != before);

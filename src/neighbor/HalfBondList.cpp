@@ -17,8 +17,9 @@ std::size_t HalfBondList::bytes() const {
 
 void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
                                 const unsigned char* bondBroken) {
-  pairDamage.assign(bondDamage ? pairPoint.size() : 0, 0.0f);
-  pairBroken.assign(bondBroken ? pairPoint.size() : 0, 0);
+  const auto padded = static_cast<std::size_t>(numPairs() + kPadding);
+  pairDamage.assign(bondDamage ? padded : 0, 0.0f);
+  pairBroken.assign(bondBroken ? padded : 0, 0);
   if (!bondDamage && !bondBroken) return;
   for (std::size_t r = 0; r + 1 < rowPairOffsets.size(); ++r)
     for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p) {
@@ -82,7 +83,7 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
     if (a >= n) ghostRowStart[a - n] = list.rowPairOffsets[r];
   }
   const std::int64_t pairs = list.rowPairOffsets.back();
-  list.pairPoint.resize(static_cast<std::size_t>(pairs));
+  list.pairPoint.assign(static_cast<std::size_t>(pairs + HalfBondList::kPadding), 0);
   list.pairSlot.resize(static_cast<std::size_t>(pairs));
   std::vector<std::int64_t> ownedRowStart(static_cast<std::size_t>(n));
   for (std::size_t r = 0; r < rows; ++r)

@@ -27,6 +27,10 @@
 namespace peridot {
 
 struct HalfBondList {
+  // The per-pair arrays a vector loop reads (pairPoint, pairLength, pairDamage, pairBroken) have
+  // kPadding entries more than there are pairs, so that a row's loop may run in whole vectors
+  // past its last pair (into the next row's pairs, or this padding: point 0, |xi| 1, intact).
+  static constexpr int kPadding = 8;
   std::vector<int> rowPoint;                 // per row, in curve order: its overlap index
   std::vector<std::int64_t> rowPairOffsets;  // rows + 1
   std::vector<int> pairPoint;                // per pair: the later end (overlap index)
@@ -40,7 +44,7 @@ struct HalfBondList {
   std::vector<float> pairDamage;          // per pair, when the run keeps float bond damage
   std::vector<unsigned char> pairBroken;  // per pair, when it keeps broken-bond flags
 
-  std::int64_t numPairs() const { return static_cast<std::int64_t>(pairPoint.size()); }
+  std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
   std::size_t bytes() const;
   // The full-list entry of pair p of row r.
   std::int64_t fullEntry(const Topology& t, std::size_t r, std::int64_t p) const {

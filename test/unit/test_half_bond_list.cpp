@@ -183,3 +183,39 @@ TEST(HalfBondList, OnlyWhereTheSceneAllowsIt) {
   EXPECT_FALSE(uses("Elastic Bond Based", "One", false, false, true));     // a separate pass
   EXPECT_FALSE(uses("Elastic", "One", false, true, true));                 // state-based
 }
+
+// Blocks that share a material entry (Peridigm's "Block Names: block_1 block_2") are walked by
+// one loop over the half list; blocks with their own materials keep the full lists.
+TEST(HalfBondList, BlocksSharingAMaterialShareTheLoop) {
+  const auto run = [](bool shared, bool half) {
+    auto L = std::make_unique<JitteredLattice>(5, false, false, 4);
+    auto material = peridot::testing::material("Elastic Bond Based", "", 1.0e9);
+    for (int k = 0; k < 2; ++k) {
+      Block b;
+      b.name = "block_" + std::to_string(k + 1);
+      b.id = k + 1;
+      b.material =
+          shared || k == 0 ? material : peridot::testing::material("Elastic Bond Based", "", 2.0e9);
+      b.damage = criticalStretch(0.01);
+      for (int i = 0; i < L->topology.numOwned; ++i)
+        if ((L->topology.referencePosition[3 * i] < 2.0) == (k == 0)) b.points.push_back(i);
+      L->blocks.push_back(b);
+    }
+    L->evaluator =
+        std::make_unique<ModelEvaluator>(L->topology, *L->fields, L->blocks, "One", L->timers);
+    L->evaluator->setHalfBondListAllowed(half);
+    L->evaluator->initialize();
+    return L;
+  };
+  EXPECT_FALSE(run(false, true)->evaluator->usesHalfBondList());
+  auto half = run(true, true), full = run(true, false);
+  ASSERT_TRUE(half->evaluator->usesHalfBondList());
+  for (int step = 0; step <= 6; ++step) {
+    deform(*half, step);
+    deform(*full, step);
+    half->evaluator->evaluate(1.0);
+    full->evaluator->evaluate(1.0);
+    EXPECT_LT(relativeDifference(force(*half), force(*full)), 1e-13) << "step " << step;
+    EXPECT_EQ(bondDamage(*half), bondDamage(*full)) << "step " << step;
+  }
+}

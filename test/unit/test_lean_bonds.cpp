@@ -221,7 +221,8 @@ TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
       // The pairs hold |xi|; the full lists need none.
       EXPECT_EQ(fast.evaluator->state().bondLength, nullptr);
       EXPECT_EQ(fast.evaluator->halfBondList()->pairLength.size(),
-                static_cast<std::size_t>(fast.evaluator->halfBondList()->numPairs()));
+                static_cast<std::size_t>(fast.evaluator->halfBondList()->numPairs() +
+                                         HalfBondList::kPadding));
       EXPECT_TRUE(lean.evaluator->halfBondList()->pairLength.empty());
     } else {
       ASSERT_NE(fast.evaluator->state().bondLength, nullptr);
