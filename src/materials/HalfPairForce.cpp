@@ -144,7 +144,10 @@ void halfLoop(const ModelState& s, const double* c) {
           const std::int64_t p = p0 + k;
           const int b = pairPoint[p];
           full[h.fullEntry(t, r, p)] = DamageT(1);
-          if (a < n && b < n) full[t.bondOffsets[b] + h.pairMirrorSlot[p]] = DamageT(1);
+          if (a < n && b < n) {
+            const std::int64_t mirror = mirrorBond(t, b, a);
+            if (mirror >= 0) full[mirror] = DamageT(1);
+          }
         }
       }
     }

@@ -10,8 +10,7 @@ namespace peridot {
 
 std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowPairOffsets.size() * sizeof(std::int64_t) +
-         pairPoint.size() * sizeof(int) +
-         (pairSlot.size() + pairMirrorSlot.size()) * sizeof(std::uint16_t) +
+         pairPoint.size() * sizeof(int) + pairSlot.size() * sizeof(std::uint16_t) +
          pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float) + pairBroken.size();
 }
 
@@ -103,47 +102,20 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
       }
     }
 
-  // Mirror entries: visiting the later ends in global-id order, the entries of row b that hold
-  // a pair of an earlier owned row j come up in the order of row j's pairs (sorted by the
-  // global id of their later ends), so one cursor per row finds them all in one pass.
-  list.pairMirrorSlot.assign(static_cast<std::size_t>(pairs), 0);
-  std::vector<int> byId(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) byId[i] = i;
-  std::sort(byId.begin(), byId.end(),
-            [&](int a, int b) { return t.overlapGlobalId[a] < t.overlapGlobalId[b]; });
-  std::vector<std::int64_t> cursor(static_cast<std::size_t>(n)),
-      rowEnd(static_cast<std::size_t>(n));
-  std::int64_t ownedPairs = 0, mirrors = 0;
-  for (std::size_t r = 0; r < rows; ++r) {
-    const int a = list.rowPoint[r];
-    if (a >= n) continue;
-    cursor[a] = list.rowPairOffsets[r];
-    rowEnd[a] = list.rowPairOffsets[r + 1];
-    for (std::int64_t p = cursor[a]; p < rowEnd[a]; ++p) ownedPairs += list.pairPoint[p] < n;
-  }
-  int symmetric = 1;
-  for (const int b : byId) {
-    for (std::int64_t e = t.bondOffsets[b]; e < t.bondOffsets[b + 1] && symmetric; ++e) {
-      const int j = t.neighbors[e];
-      if (j >= n || !before(j, b)) continue;
-      std::int64_t& p = cursor[j];
-      while (p < rowEnd[j] && list.pairPoint[p] != b) ++p;  // skips row j's pairs with ghosts
-      if (p == rowEnd[j]) {
-        symmetric = 0;  // b's row holds j, j's row does not hold b
-        break;
-      }
-      list.pairMirrorSlot[p++] = static_cast<std::uint16_t>(e - t.bondOffsets[b]);
-      ++mirrors;
-    }
-  }
-  // Every bond must be in both ends' lists: the loop reads one end's damage for both.
-  if (mirrors != ownedPairs) symmetric = 0;
-  MPI_Allreduce(MPI_IN_PLACE, &symmetric, 1, MPI_INT, MPI_MIN, t.comm);
-  if (!symmetric) {
-    list = HalfBondList();
-    return false;
-  }
   return true;
+}
+
+std::int64_t mirrorBond(const Topology& t, int j, int i) {
+  const GlobalOrdinal id = t.overlapGlobalId[i];
+  std::int64_t lo = t.bondOffsets[j], hi = t.bondOffsets[j + 1];
+  while (lo < hi) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    if (t.overlapGlobalId[t.neighbors[mid]] < id)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < t.bondOffsets[j + 1] && t.overlapGlobalId[t.neighbors[lo]] == id ? lo : -1;
 }
 
 }  // namespace peridot

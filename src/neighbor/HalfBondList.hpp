@@ -37,9 +37,6 @@ struct HalfBondList {
   // Per pair: its entry in the full list row of its earlier end if that is owned, else of its
   // later end (then owned): bondOffsets[holder] + pairSlot.
   std::vector<std::uint16_t> pairSlot;
-  // Per pair with both ends owned: its entry in the later end's row, bondOffsets[later] +
-  // pairMirrorSlot (a break is recorded at both ends).
-  std::vector<std::uint16_t> pairMirrorSlot;
   std::vector<double> pairLength;         // per pair |xi|, or empty (computed in the loop)
   std::vector<float> pairDamage;          // per pair, when the run keeps float bond damage
   std::vector<unsigned char> pairBroken;  // per pair, when it keeps broken-bond flags
@@ -58,8 +55,12 @@ struct HalfBondList {
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
 // `list` empty) where it cannot be used: a topology without a curve box, periodic images, a full
-// row longer than 65536 entries, or lists where a bond between owned points is in one end's
-// list only. Collective: every rank returns the same answer.
+// row longer than 65536 entries. Collective: every rank returns the same answer.
 bool buildHalfBondList(const Topology& topology, HalfBondList& list);
+
+// The full-list entry of owned point j that holds its bond to point i (rows are sorted by global
+// id), or -1 if j's row has none. Where a bond breaks (rare) the loop finds the later end's entry
+// this way: a table of them would cost 2 bytes a bond and a set-up pass of random reads.
+std::int64_t mirrorBond(const Topology& topology, int j, int i);
 
 }  // namespace peridot
