@@ -35,15 +35,14 @@ void halfLoop(const ModelState& s, const double* c) {
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
   const int* pairPoint = h.pairPoint.data();
   const double* pairLength = h.pairLength.data();
-  DamageT* pairDamage;
+  // The pairs' copy of the damage is a float whatever the run keeps (0/1 flags are exact in it;
+  // a 1-byte type here would make the vector pass 32 pairs wide).
+  float* pairDamage = h.pairDamage.data();
   DamageT* full;  // the run's bond damage, written where a bond breaks
-  if constexpr (std::is_same_v<DamageT, float>) {
-    pairDamage = h.pairDamage.data();
+  if constexpr (std::is_same_v<DamageT, float>)
     full = s.breakableBondDamage;
-  } else {
-    pairDamage = h.pairBroken.data();
+  else
     full = s.breakableBondBroken;
-  }
   const double* y = s.y;
   const double* x = s.x;
   const double* volume = s.volume;
@@ -96,18 +95,13 @@ void halfLoop(const ModelState& s, const double* c) {
       double c2 = ca + c[b];
       if constexpr (kBreak) {
         // The critical stretch as the separate damage pass applies it; no branch.
-        const DamageT before = pairDamage[p];
-        const DamageT now = k < m && (dY - zb) / zb > criticalStretch ? DamageT(1) : before;
+        const float before = pairDamage[p];
+        const float now = k < m && (dY - zb) / zb > criticalStretch ? 1.0f : before;
         pairDamage[p] = now;
         broke[k] = now != before;
         anyBroke |= static_cast<int>(now != before);
       }
-      if constexpr (kDamage) {
-        if constexpr (std::is_same_v<DamageT, float>)
-          c2 *= 1.0 - pairDamage[p];
-        else
-          c2 *= pairDamage[p] ? 0.0 : 1.0;
-      }
+      if constexpr (kDamage) c2 *= 1.0 - pairDamage[p];  // flags: 1 - 1 = 0 and 1 - 0 = 1 exactly
       // (c2 / 2) s / |Y| in one division (shared by both ends; each end then takes the other's
       // volume); none for coincident ends.
       const double safe = dY > 0 ? dY : 1.0;

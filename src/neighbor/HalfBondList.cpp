@@ -11,20 +11,19 @@ namespace peridot {
 std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowPairOffsets.size() * sizeof(std::int64_t) +
          pairPoint.size() * sizeof(int) + pairSlot.size() * sizeof(std::uint16_t) +
-         pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float) + pairBroken.size();
+         pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float);
 }
 
 void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
                                 const unsigned char* bondBroken) {
   const auto padded = static_cast<std::size_t>(numPairs() + kPadding);
-  pairDamage.assign(bondDamage ? padded : 0, 0.0f);
-  pairBroken.assign(bondBroken ? padded : 0, 0);
+  pairDamage.assign(bondDamage || bondBroken ? padded : 0, 0.0f);
   if (!bondDamage && !bondBroken) return;
   for (std::size_t r = 0; r + 1 < rowPairOffsets.size(); ++r)
     for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p) {
       const std::int64_t e = fullEntry(t, r, p);
       if (bondDamage) pairDamage[p] = bondDamage[e];
-      if (bondBroken) pairBroken[p] = bondBroken[e];
+      if (bondBroken) pairDamage[p] = bondBroken[e] ? 1.0f : 0.0f;
     }
 }
 

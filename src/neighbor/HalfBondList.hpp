@@ -27,7 +27,7 @@
 namespace peridot {
 
 struct HalfBondList {
-  // The per-pair arrays a vector loop reads (pairPoint, pairLength, pairDamage, pairBroken) have
+  // The per-pair arrays a vector loop reads (pairPoint, pairLength, pairDamage) have
   // kPadding entries more than there are pairs, so that a row's loop may run in whole vectors
   // past its last pair (into the next row's pairs, or this padding: point 0, |xi| 1, intact).
   static constexpr int kPadding = 8;
@@ -37,9 +37,9 @@ struct HalfBondList {
   // Per pair: its entry in the full list row of its earlier end if that is owned, else of its
   // later end (then owned): bondOffsets[holder] + pairSlot.
   std::vector<std::uint16_t> pairSlot;
-  std::vector<double> pairLength;         // per pair |xi|, or empty (computed in the loop)
-  std::vector<float> pairDamage;          // per pair, when the run keeps float bond damage
-  std::vector<unsigned char> pairBroken;  // per pair, when it keeps broken-bond flags
+  std::vector<double> pairLength;  // per pair |xi|, or empty (computed in the loop)
+  // Per pair, when the run has bond damage: a float copy of it (also of broken-bond flags).
+  std::vector<float> pairDamage;
 
   std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
   std::size_t bytes() const;
