@@ -44,6 +44,9 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   const auto before = [&](int a, int b) {
     return key[a] != key[b] ? key[a] < key[b] : t.overlapGlobalId[a] < t.overlapGlobalId[b];
   };
+  // Whether owned point i's neighbour j comes after it: between owned points the local order is
+  // the curve order (no key to read).
+  const auto after = [&](int i, int j) { return j < n ? j > i : before(i, j); };
 
   // Pairs per owned row (its neighbours after it) and per ghost row (its owned neighbours after
   // it, found from their rows).
@@ -52,7 +55,7 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   for (int i = 0; i < n; ++i)
     for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
       const int j = t.neighbors[e];
-      if (before(i, j))
+      if (after(i, j))
         ++ownedCount[i];
       else if (j >= n)
         ++ghostCount[j - n];
@@ -90,7 +93,7 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
     for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
       const int j = t.neighbors[e];
       const auto slot = static_cast<std::uint16_t>(e - t.bondOffsets[i]);
-      if (before(i, j)) {
+      if (after(i, j)) {
         const std::int64_t p = ownedRowStart[i]++;
         list.pairPoint[p] = j;
         list.pairSlot[p] = slot;
