@@ -35,6 +35,9 @@ peridot_restart_test(split_perforation split Perforation.yaml.in 2.0e-5 1.0e-5 1
 peridot_restart_test(peridigm_perforation peridigm PeridigmPerforation.xml.in 4.0e-2 2.0e-2 20
                      "Damage")
 peridot_restart_test(split_lsjt split LSJT.yaml.in 1.0e-5 5.0e-6 10 "Damage")
+# PMB + critical stretch over the half bond list: the pairs' copy of the bond damage must be read
+# again from the checkpoint (bonds break before and after it).
+peridot_restart_test(split_pmb split PMB.yaml.in 4.0e-6 2.0e-6 10 "Damage")
 peridot_restart_test(signal signal Perforation.yaml.in 6.0e-5 0 10 "Damage")
 peridot_restart_test(refused refused Perforation.yaml.in 2.0e-5 1.0e-5 10 "")
 # An Implicit run of 10^5 steps stopped by SIGTERM: status 5, the completed steps' records.
