@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "damage/CriticalStretch.hpp"
 #include "materials/MaterialModel.hpp"
 
 namespace peridot {
@@ -23,6 +24,14 @@ inline std::shared_ptr<MaterialModel> material(const std::string& model, const s
   if (!mode.empty()) p.set(mode, true);
   ListReader r(p, "Materials -> M");
   return createMaterial(r);
+}
+
+// The "Critical Stretch" damage model with critical stretch sc.
+inline std::shared_ptr<DamageModel> criticalStretch(double sc) {
+  Teuchos::ParameterList p;
+  p.set("Critical Stretch", sc);
+  ListReader r(p, "Damage Models -> D");
+  return std::make_shared<CriticalStretch>(r);
 }
 
 // A correspondence model with bulk modulus K and shear modulus G (density 1): `integration` is

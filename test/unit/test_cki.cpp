@@ -13,6 +13,7 @@
 #include <random>
 #include <sstream>
 
+#include "Materials.hpp"
 #include "PlanarProblem.hpp"
 #include "SerialProblem.hpp"
 #include "core/Error.hpp"
@@ -41,12 +42,7 @@ std::shared_ptr<ContinuumKinematics> cki(const std::string& mode, double E, doub
   return std::dynamic_pointer_cast<ContinuumKinematics>(m);
 }
 
-std::shared_ptr<DamageModel> criticalStretch(double sc) {
-  Teuchos::ParameterList p;
-  p.set("Critical Stretch", sc);
-  ListReader r(p, "Damage Models -> D");
-  return std::make_shared<CriticalStretch>(r);
-}
+using peridot::testing::criticalStretch;
 
 // Total stored energy sum_i V_i W_i over the owned points.
 double totalEnergy(Problem& pr) {

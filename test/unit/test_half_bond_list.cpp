@@ -23,12 +23,7 @@ using peridot::testing::JitteredLattice;
 
 namespace {
 
-std::shared_ptr<DamageModel> criticalStretch(double sc) {
-  Teuchos::ParameterList p;
-  p.set("Critical Stretch", sc);
-  ListReader r(p, "Damage Models -> D");
-  return std::make_shared<CriticalStretch>(r);
-}
+using peridot::testing::criticalStretch;
 
 // y = x + a stretch along x that grows with `step`, plus a fixed random-looking field.
 void deform(JitteredLattice& L, int step) {

@@ -20,12 +20,7 @@ using namespace peridot;
 
 namespace {
 
-std::shared_ptr<DamageModel> criticalStretch(double sc) {
-  Teuchos::ParameterList p;
-  p.set("Critical Stretch", sc);
-  ListReader r(p, "Damage Models -> D");
-  return std::make_shared<CriticalStretch>(r);
-}
+using peridot::testing::criticalStretch;
 
 // A jittered n^3 lattice (spacing 1, horizon 2.1), one block; compact damage allowed or not.
 struct Lattice {

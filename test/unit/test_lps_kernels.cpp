@@ -25,12 +25,7 @@ using namespace peridot;
 
 namespace {
 
-std::shared_ptr<DamageModel> criticalStretch(double sc) {
-  Teuchos::ParameterList p;
-  p.set("Critical Stretch", sc);
-  ListReader r(p, "Damage Models -> D");
-  return std::make_shared<CriticalStretch>(r);
-}
+using peridot::testing::criticalStretch;
 
 std::shared_ptr<DamageModel> dtt(double sc) {
   Teuchos::ParameterList p;
