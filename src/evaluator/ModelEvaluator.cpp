@@ -262,6 +262,11 @@ void ModelEvaluator::setThermal(const double* temperatureChange) {
   // Without expanding materials nothing reads the strain (damage models read Delta T only).
   state_.thermalStrain = expands ? fields_.node(kThermalStrain, 1) : nullptr;
   thermal_ = expands;  // the pointer is null on a rank without points
+  // The half list's loop has no thermal strains: its memory goes back (the same on every rank).
+  if (expands && halfBondsBuilt_) {
+    halfBonds_ = HalfBondList();
+    halfBondsBuilt_ = false;
+  }
 }
 
 bool ModelEvaluator::hasHistory() const {
@@ -326,8 +331,7 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
     for (const auto& f : syncAfterPrecompute_) fields_.refreshGhosts(f);
   }
   Timers::Scope t(timers_, "Force");
-  // Thermal strains come after initialize (setThermal): the half list's loop has none.
-  state_.halfBonds = halfBondsBuilt_ && !thermal_ ? &halfBonds_ : nullptr;
+  state_.halfBonds = halfBondsBuilt_ ? &halfBonds_ : nullptr;  // none with thermal strains
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
     breakable(b, false);

@@ -39,8 +39,8 @@ class ModelEvaluator {
   // Allows the bond-based materials to walk each bond once (neighbor/HalfBondList.hpp) where the
   // scene allows it (the default); false keeps the two-sided loop. Before initialize().
   void setHalfBondListAllowed(bool allowed) { halfBondListAllowed_ = allowed; }
-  // Whether initialize() built the half bond list (the same on every rank); its evaluations
-  // then use it except with thermal strains.
+  // Whether initialize() built the half bond list (the same on every rank) and its evaluations
+  // use it (setThermal with expanding materials drops it).
   bool usesHalfBondList() const { return halfBondsBuilt_; }
   std::size_t halfBondListBytes() const { return halfBonds_.bytes(); }
   HalfBondList* halfBondList() { return halfBondsBuilt_ ? &halfBonds_ : nullptr; }

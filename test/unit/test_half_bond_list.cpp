@@ -218,3 +218,27 @@ TEST(HalfBondList, BlocksSharingAMaterialShareTheLoop) {
     EXPECT_EQ(bondDamage(*half), bondDamage(*full)) << "step " << step;
   }
 }
+
+// Thermal strains (set after initialize) take the full lists' loop, which has them; the half
+// list is dropped.
+TEST(HalfBondList, ThermalStrainsTakeTheFullLists) {
+  JitteredLattice L(4, false, false, 6);
+  Teuchos::ParameterList p;
+  p.set("Material Model", "Elastic Bond Based");
+  p.set("Density", 1.0);
+  p.set("Young's Modulus", 1.0e9);
+  p.set("Thermal Expansion Coefficient", 1.0e-5);
+  ListReader r(p, "Materials -> M");
+  L.addBlock(createMaterial(r), criticalStretch(0.01), "One", true);
+  ASSERT_TRUE(L.evaluator->usesHalfBondList());
+  std::vector<double> temperature(static_cast<std::size_t>(L.topology.numOverlap), 50.0);
+  L.evaluator->setThermal(temperature.data());
+  EXPECT_FALSE(L.evaluator->usesHalfBondList());
+  EXPECT_EQ(L.evaluator->halfBondListBytes(), 0u);
+  // The free expansion of a uniformly heated body: no force, as the full lists' loop gives it.
+  double* y = L.fields->node("Coordinates", 3);
+  const double* x = L.fields->node("Model_Coordinates", 3);
+  for (int k = 0; k < 3 * L.topology.numOverlap; ++k) y[k] = x[k] * (1.0 + 50.0 * 1.0e-5);
+  L.evaluator->evaluate(1.0);
+  for (double f : force(L)) EXPECT_NEAR(f, 0.0, 1e-3);
+}
