@@ -152,10 +152,7 @@ void PMBHalfBondListFusedCriticalStretch(benchmark::State& state) {
     state.SkipWithError("no half bond list");
     return;
   }
-  half.pairLength.assign(static_cast<std::size_t>(half.numPairs() + HalfBondList::kPadding), 1.0);
-  for (std::size_t r = 0; r < half.rowPoint.size(); ++r)
-    for (std::int64_t p = half.rowPairOffsets[r]; p < half.rowPairOffsets[r + 1]; ++p)
-      half.pairLength[p] = referenceBondLength(st.x, half.rowPoint[r], half.pairPoint[p]);
+  half.storeLengths(st.x);
   half.gatherDamage(s.topology, st.bondDamage, nullptr);
   st.halfBonds = &half;
   for (auto _ : state) s.blocks[0].material->computeForce(st, s.blocks[0].points);
@@ -164,69 +161,9 @@ void PMBHalfBondListFusedCriticalStretch(benchmark::State& state) {
 }
 BENCHMARK(PMBHalfBondListFusedCriticalStretch)->Unit(benchmark::kMillisecond);
 
-// An experiment for issue 16 (not what Peridot runs): the same PMB + critical-stretch update
-// over a *half* bond list (each pair once, j > i), the pair force added to i and subtracted from
-// j, as codes that use Newton's third law do. It halves the square roots, divisions and streamed
-// bytes, but scatters into j (no vector lanes for the sum) and changes the order in which a
-// point's force is summed (so results would no longer be identical at any rank count).
-// Reported per one-sided bond, as the loops above.
-void PMBHalfListExperiment(benchmark::State& state) {
-  Scene& s = scene();
-  const ModelState& st = s.evaluator->state();
-  const std::int64_t* off = s.topology.bondOffsets.data();
-  const int* nb = s.topology.neighbors.data();
-  const double* c = s.fields->node("PMB_Micromodulus", 1);
-  const int n = s.topology.numOwned;
-  std::vector<std::int64_t> halfOffsets(n + 1, 0);
-  std::vector<int> half;
-  std::vector<double> halfLength;
-  std::vector<float> halfDamage;
-  for (int i = 0; i < n; ++i) {
-    for (std::int64_t b = off[i]; b < off[i + 1]; ++b)
-      if (nb[b] > i && nb[b] < n) {
-        half.push_back(nb[b]);
-        halfLength.push_back(st.bondLength[b]);
-        halfDamage.push_back(0.0f);
-      }
-    halfOffsets[i + 1] = static_cast<std::int64_t>(half.size());
-  }
-  std::vector<double> f(3 * n);
-  const double criticalStretch = 0.5;
-  for (auto _ : state) {
-    std::fill(f.begin(), f.end(), 0.0);
-    for (int i = 0; i < n; ++i) {
-      const double yi0 = st.y[3 * i], yi1 = st.y[3 * i + 1], yi2 = st.y[3 * i + 2];
-      const double ci = c[i], vi = st.volume[i];
-      double f0 = 0, f1 = 0, f2 = 0;
-      for (std::int64_t b = halfOffsets[i]; b < halfOffsets[i + 1]; ++b) {
-        const int j = half[b];
-        const double zb = halfLength[b];
-        const double Y0 = st.y[3 * j] - yi0, Y1 = st.y[3 * j + 1] - yi1, Y2 = st.y[3 * j + 2] - yi2;
-        const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
-        if ((dY - zb) / zb > criticalStretch) halfDamage[b] = 1.0f;
-        const double g = (ci + c[j]) * (1.0 - halfDamage[b]) * (dY - zb) / (2.0 * zb * dY);
-        f0 += g * st.volume[j] * Y0;
-        f1 += g * st.volume[j] * Y1;
-        f2 += g * st.volume[j] * Y2;
-        f[3 * j] -= g * vi * Y0;
-        f[3 * j + 1] -= g * vi * Y1;
-        f[3 * j + 2] -= g * vi * Y2;
-      }
-      f[3 * i] += f0;
-      f[3 * i + 1] += f1;
-      f[3 * i + 2] += f2;
-    }
-    benchmark::DoNotOptimize(f.data());
-  }
-  state.counters["bonds/s"] = benchmark::Counter(
-      static_cast<double>(s.topology.numBonds()) * state.iterations(), benchmark::Counter::kIsRate);
-  state.counters["half pairs"] = static_cast<double>(half.size());
-}
-BENCHMARK(PMBHalfListExperiment)->Unit(benchmark::kMillisecond);
-
-// Its control: the full list walked by the same scalar code (no vector lanes, no gathers: without
-// `omp simd` GCC keeps the force sum in order, so it does not vectorize the loop), to tell the
-// half list's gain from the loss of the vector gathers.
+// An experiment for issue 16 (not what Peridot runs): the full list walked by plain scalar code
+// (no vector lanes, no gathers: without `omp simd` GCC keeps the force sum in order, so it does
+// not vectorize the loop), to tell what the vector lanes of PMBForceLoop buy.
 void PMBFullListScalarExperiment(benchmark::State& state) {
   Scene& s = scene();
   const ModelState& st = s.evaluator->state();

@@ -206,15 +206,7 @@ void ModelEvaluator::initialize() {
 
   halfBondsBuilt_ = half && buildHalfBondList(topology_, halfBonds_);
   if (halfBondsBuilt_) {
-    if (storeBondLengths_) {
-      halfBonds_.pairLength.assign(
-          static_cast<std::size_t>(halfBonds_.numPairs() + HalfBondList::kPadding), 1.0);
-      for (std::size_t r = 0; r < halfBonds_.rowPoint.size(); ++r)
-        for (std::int64_t p = halfBonds_.rowPairOffsets[r]; p < halfBonds_.rowPairOffsets[r + 1];
-             ++p)
-          halfBonds_.pairLength[p] =
-              referenceBondLength(state_.x, halfBonds_.rowPoint[r], halfBonds_.pairPoint[p]);
-    }
+    if (storeBondLengths_) halfBonds_.storeLengths(state_.x);
     bondDamageRewritten();
   }
 }

@@ -57,11 +57,8 @@ void halfLoop(const ModelState& s, const double* c) {
   thread_local std::vector<double> scratch;
   thread_local std::vector<int>
       brokeNow;  // int: a 1-byte type would make the vectors 32 pairs wide
-  std::size_t longest = 0;
   const std::size_t rows = h.rowPoint.size();
-  for (std::size_t r = 0; r < rows; ++r)
-    longest = std::max(longest, static_cast<std::size_t>(rowPairs[r + 1] - rowPairs[r]));
-  longest = (longest + kLanes - 1) / kLanes * kLanes;
+  const auto longest = static_cast<std::size_t>((h.longestRow + kLanes - 1) / kLanes * kLanes);
   if (scratch.size() < 4 * longest) scratch.resize(4 * longest);
   if (brokeNow.size() < longest) brokeNow.resize(longest);
   double* bufY0 = scratch.data();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "neighbor/BondGeometry.hpp"
 #include "parallel/Partition.hpp"
 
 namespace peridot {
@@ -25,6 +26,13 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
       if (bondDamage) pairDamage[p] = bondDamage[e];
       if (bondBroken) pairDamage[p] = bondBroken[e] ? 1.0f : 0.0f;
     }
+}
+
+void HalfBondList::storeLengths(const double* x) {
+  pairLength.assign(static_cast<std::size_t>(numPairs() + kPadding), 1.0);
+  for (std::size_t r = 0; r < rowPoint.size(); ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
+      pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);
 }
 
 bool buildHalfBondList(const Topology& t, HalfBondList& list) {
@@ -81,6 +89,8 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
     const int a = list.rowPoint[r];
     list.rowPairOffsets[r + 1] =
         list.rowPairOffsets[r] + (a < n ? ownedCount[a] : ghostCount[a - n]);
+    list.longestRow =
+        std::max(list.longestRow, list.rowPairOffsets[r + 1] - list.rowPairOffsets[r]);
     if (a >= n) ghostRowStart[a - n] = list.rowPairOffsets[r];
   }
   const std::int64_t pairs = list.rowPairOffsets.back();

@@ -42,6 +42,8 @@ struct HalfBondList {
   std::vector<float> pairDamage;
 
   std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
+  // The most pairs of any row (a row's vector pass buffers that many).
+  std::int64_t longestRow = 0;
   std::size_t bytes() const;
   // The full-list entry of pair p of row r.
   std::int64_t fullEntry(const Topology& t, std::size_t r, std::int64_t p) const {
@@ -49,6 +51,8 @@ struct HalfBondList {
     const int holder = a < t.numOwned ? a : pairPoint[p];
     return t.bondOffsets[holder] + pairSlot[p];
   }
+  // Fills pairLength with each pair's |xi| from the reference coordinates x (overlap-indexed).
+  void storeLengths(const double* x);
   // Copies the run's bond damage (float or flags; null: none) into the pairs.
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
 };

@@ -72,6 +72,17 @@ struct JitteredLattice {
     evaluator->setCompactDamageAllowed(allowCompact);
     evaluator->initialize();
   }
+
+  // The owned points' force density and node damage after an evaluation.
+  std::vector<double> force() const {
+    const double* f = fields->nodeField("Force_Density").data;
+    return std::vector<double>(f, f + 3 * topology.numOwned);
+  }
+  std::vector<double> nodeDamage() const {
+    std::vector<double> d(topology.numOwned);
+    evaluator->nodeDamage(d.data());
+    return d;
+  }
 };
 
 }  // namespace testing

@@ -35,17 +35,6 @@ void deform(JitteredLattice& L, int step) {
                      0.02 * std::sin(7.0 * p + 3.0 * d);
 }
 
-std::vector<double> force(const JitteredLattice& L) {
-  const double* f = L.fields->nodeField("Force_Density").data;
-  return std::vector<double>(f, f + 3 * L.topology.numOwned);
-}
-
-std::vector<double> nodeDamage(const JitteredLattice& L) {
-  std::vector<double> d(L.topology.numOwned);
-  L.evaluator->nodeDamage(d.data());
-  return d;
-}
-
 // The bond damage the full lists hold (either form), as floats.
 std::vector<float> bondDamage(const JitteredLattice& L) {
   const ModelState& s = L.evaluator->state();
@@ -126,9 +115,9 @@ TEST(HalfBondList, ForceMatchesTheFullListsAndTheSameBondsBreak) {
         deform(full, step);
         half.evaluator->evaluate(1.0);
         full.evaluator->evaluate(1.0);
-        EXPECT_LT(relativeDifference(force(half), force(full)), 1e-13) << "step " << step;
+        EXPECT_LT(relativeDifference(half.force(), full.force()), 1e-13) << "step " << step;
         EXPECT_EQ(bondDamage(half), bondDamage(full)) << "step " << step;
-        EXPECT_EQ(nodeDamage(half), nodeDamage(full)) << "step " << step;
+        EXPECT_EQ(half.nodeDamage(), full.nodeDamage()) << "step " << step;
         broken = 0;
         for (float d : bondDamage(full)) broken += d;
       }
@@ -159,7 +148,7 @@ TEST(HalfBondList, RestoredDamageIsReadAgain) {
   full.evaluator->restoreDamage(savedFull);
   half.evaluator->evaluate(1.0, false);  // at the same state, nothing broken
   full.evaluator->evaluate(1.0, false);
-  EXPECT_LT(relativeDifference(force(half), force(full)), 1e-13);
+  EXPECT_LT(relativeDifference(half.force(), full.force()), 1e-13);
   EXPECT_EQ(bondDamage(half), bondDamage(full));
 }
 
@@ -214,7 +203,7 @@ TEST(HalfBondList, BlocksSharingAMaterialShareTheLoop) {
     deform(*full, step);
     half->evaluator->evaluate(1.0);
     full->evaluator->evaluate(1.0);
-    EXPECT_LT(relativeDifference(force(*half), force(*full)), 1e-13) << "step " << step;
+    EXPECT_LT(relativeDifference(half->force(), full->force()), 1e-13) << "step " << step;
     EXPECT_EQ(bondDamage(*half), bondDamage(*full)) << "step " << step;
   }
 }
@@ -240,5 +229,5 @@ TEST(HalfBondList, ThermalStrainsTakeTheFullLists) {
   const double* x = L.fields->node("Model_Coordinates", 3);
   for (int k = 0; k < 3 * L.topology.numOverlap; ++k) y[k] = x[k] * (1.0 + 50.0 * 1.0e-5);
   L.evaluator->evaluate(1.0);
-  for (double f : force(L)) EXPECT_NEAR(f, 0.0, 1e-3);
+  for (double f : L.force()) EXPECT_NEAR(f, 0.0, 1e-3);
 }
