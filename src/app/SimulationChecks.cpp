@@ -15,6 +15,7 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "deck/OutputVariables.hpp"
 
 namespace peridot {
 
@@ -102,7 +103,11 @@ void Simulation::checkVariables() {
     lps = lps || b.material->family() == "LPS";
     for (const auto& f : b.material->outputFields()) modelFields.insert(f);
   }
-  auto check = [&](const std::string& v, const std::string& path) {
+  auto check = [&](const std::string& name, const std::string& path) {
+    // A tensor's component (Cauchy_StressXX) needs what its tensor needs.
+    std::string v = name;
+    int component = 0;
+    if (std::string tensor; tensorComponent(name, tensor, component)) v = tensor;
     if ((v == "Dilatation" || v == "Weighted_Volume") && !lps && !modelFields.count(v)) {
       throw InputError(path, "\"" + v + "\" needs a state-based material (e.g. \"Elastic\")");
     }

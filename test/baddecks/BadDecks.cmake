@@ -223,6 +223,8 @@ peridot_baddeck(unknown_output_file_type DECK unknown_output_file_type.yaml
   EXPECT [[Output -> Output File Type: unknown value "VTK"; expected one of "ExodusII"]])
 peridot_baddeck(unknown_output_variable DECK unknown_output_variable.yaml
   EXPECT [[Output -> Output Variables -> Velocty: unknown output variable]])
+peridot_baddeck(tensor_component_lps DECK tensor_component_lps.yaml
+  EXPECT [[Output -> Output Variables -> Cauchy_StressXX: "Cauchy_Stress" needs a correspondence material]])
 peridot_baddeck(dilatation_bond_based DECK dilatation_bond_based.yaml
   EXPECT [[Output -> Output Variables -> Dilatation: "Dilatation" needs a state-based material]])
 peridot_baddeck(output_frequency_zero DECK output_frequency_zero.yaml
