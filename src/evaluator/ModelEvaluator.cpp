@@ -1,7 +1,10 @@
 #include "evaluator/ModelEvaluator.hpp"
 
+#include <mpi.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/CollectiveError.hpp"
@@ -49,23 +52,8 @@ void ModelEvaluator::initialize() {
     compactDamage_ = compact && anyDamageModel;
   }
 
-  // Reference bond lengths, once, if some block reads them (MaterialModel::needsBondLength, or a
-  // damage pass that is not fused into the force loop): the kernels read them instead of the
-  // neighbours' reference coordinates. Others compute |xi| with referenceBondLength() (same
-  // bits) and save 8 bytes a bond.
-  // With the half bond list the pairs keep |xi| themselves (when lengths are stored at all).
-  const bool half = halfBondListApplies();
-  bool needLength = storeBondLengths_ && !half;
-  for (const auto& b : blocks_)
-    needLength = needLength || b.material->needsBondLength() ||
-                 (b.damage && b.damage->needsBondLength() && !fusesDamage(b));
-  if (needLength) {
-    std::vector<double>& length = fields_.bond("Reference_Bond_Length");
-    for (int i = 0; i < topology_.numOwned; ++i)
-      for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
-        length[b] = referenceBondLength(state_.x, i, topology_.neighbors[b]);
-    state_.bondLength = length.data();
-  }
+  halfBondsBuilt_ = halfBondListApplies() && buildHalfBondList(topology_, halfBonds_);
+  storeBondLengthsIfRead();
 
   // Bond influence: stored per bond only when it is not the constant 1. The bond-based models'
   // micromoduli assume omega = 1 (Peridigm's PMB ignores the influence function): refuse rather
@@ -204,11 +192,30 @@ void ModelEvaluator::initialize() {
   for (const auto& f : syncInit) fields_.refreshGhosts(f);
   syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
 
-  halfBondsBuilt_ = half && buildHalfBondList(topology_, halfBonds_);
   if (halfBondsBuilt_) {
     if (storeBondLengths_) halfBonds_.storeLengths(state_.x);
+    if (state_.influence) halfBonds_.gatherInfluence(topology_, state_.influence);
     bondDamageRewritten();
   }
+}
+
+// Reference bond lengths, once, if some block reads them (MaterialModel::needsBondLength, or a
+// damage pass that is not fused into the force loop): the kernels read them instead of the
+// neighbours' reference coordinates. Others compute |xi| with referenceBondLength() (same bits)
+// and save 8 bytes a bond. With the half bond list the pairs keep |xi| themselves (when lengths
+// are stored at all): a half-list material's loops read those, its other passes compute it.
+void ModelEvaluator::storeBondLengthsIfRead() {
+  const bool half = halfBondsBuilt_;
+  bool needLength = storeBondLengths_ && !half;
+  for (const auto& b : blocks_)
+    needLength = needLength || (b.material->needsBondLength() && !half) ||
+                 (b.damage && b.damage->needsBondLength() && !fusesDamage(b));
+  if (!needLength || state_.bondLength) return;
+  std::vector<double>& length = fields_.bond("Reference_Bond_Length");
+  for (int i = 0; i < topology_.numOwned; ++i)
+    for (std::int64_t b = topology_.bondOffsets[i]; b < topology_.bondOffsets[i + 1]; ++b)
+      length[b] = referenceBondLength(state_.x, i, topology_.neighbors[b]);
+  state_.bondLength = length.data();
 }
 
 void ModelEvaluator::bondDamageRewritten() {
@@ -218,15 +225,26 @@ void ModelEvaluator::bondDamageRewritten() {
 bool ModelEvaluator::halfBondListApplies() const {
   // Every block with the same material instance (one force loop then covers every pair of the
   // rank's points: the deck's blocks that share a material entry) that walks pairs, and a pair
-  // force that is the same bits read from either end: the linear law, omega = 1, bonds within
-  // both horizons, and bond damage that only a fused critical stretch writes, the same for every
+  // force that is the same bits read from either end: the linear law, an omega that is 1 or a
+  // function of |xi| alone (one horizon everywhere, no partial volumes), bonds within both
+  // horizons, and bond damage that only a fused critical stretch writes, the same for every
   // block (it breaks both entries of a bond together; a separate pass, or initial damage, might
   // leave the two ends apart). Every condition is the same on every rank.
   if (!halfBondListAllowed_ || blocks_.empty()) return false;
   const Block& first = blocks_.front();
-  const bool influence = influenceFunction_ != "One" || partialVolumes_;  // stored per bond
-  if (!first.material->computesOverHalfBondList() || influence || !topology_.bondSides.empty())
-    return false;
+  if (!first.material->computesOverHalfBondList() || !topology_.bondSides.empty()) return false;
+  if (partialVolumes_) return false;
+  if (influenceFunction_ != "One") {
+    if (!first.material->halfBondListTakesInfluence()) return false;
+    double range[2] = {-std::numeric_limits<double>::infinity(),
+                       -std::numeric_limits<double>::infinity()};  // -min, max
+    for (int i = 0; i < topology_.numOwned; ++i) {
+      range[0] = std::max(range[0], -state_.horizon[i]);
+      range[1] = std::max(range[1], state_.horizon[i]);
+    }
+    MPI_Allreduce(MPI_IN_PLACE, range, 2, MPI_DOUBLE, MPI_MAX, topology_.comm);
+    if (-range[0] != range[1]) return false;
+  }
   for (const Block& b : blocks_) {
     if (b.material != first.material || (b.damage == nullptr) != (first.damage == nullptr))
       return false;
@@ -254,10 +272,12 @@ void ModelEvaluator::setThermal(const double* temperatureChange) {
   // Without expanding materials nothing reads the strain (damage models read Delta T only).
   state_.thermalStrain = expands ? fields_.node(kThermalStrain, 1) : nullptr;
   thermal_ = expands;  // the pointer is null on a rank without points
-  // The half list's loop has no thermal strains: its memory goes back (the same on every rank).
+  // The half list's loops have no thermal strains: its memory goes back (the same on every
+  // rank), and the full lists' loops may need |xi| per bond.
   if (expands && halfBondsBuilt_) {
     halfBonds_ = HalfBondList();
     halfBondsBuilt_ = false;
+    storeBondLengthsIfRead();
   }
 }
 
@@ -310,6 +330,8 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
   };
   bool precompute = !syncAfterPrecompute_.empty();
   for (const auto& b : blocks_) precompute = precompute || b.material->breaksInPrecompute();
+  // Over the half list the first block's loops walk every pair of every block.
+  state_.halfBonds = halfBondsBuilt_ ? &halfBonds_ : nullptr;  // none with thermal strains
   if (precompute) {
     {
       Timers::Scope t(timers_, "Force");
@@ -317,18 +339,18 @@ void ModelEvaluator::evaluate(double dt, bool updateDamage, bool commitHistory) 
         state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
         breakable(b, true);
         b.material->precompute(state_, b.points);
+        if (state_.halfBonds) break;
       }
     }
     Timers::Scope t(timers_, "Ghost exchange");
     for (const auto& f : syncAfterPrecompute_) fields_.refreshGhosts(f);
   }
   Timers::Scope t(timers_, "Force");
-  state_.halfBonds = halfBondsBuilt_ ? &halfBonds_ : nullptr;  // none with thermal strains
   for (auto& b : blocks_) {
     state_.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();
     breakable(b, false);
     b.material->computeForce(state_, b.points);
-    if (state_.halfBonds) break;  // the first block's loop walked every pair of every block
+    if (state_.halfBonds) break;
   }
   state_.halfBonds = nullptr;
   state_.breakableBondDamage = nullptr;

@@ -123,6 +123,7 @@ class ModelEvaluator {
   HalfBondList halfBonds_;
   // Whether the scene allows the half list (see initialize()).
   bool halfBondListApplies() const;
+  void storeBondLengthsIfRead();
   bool velocityGhosts_ =
       false;  // some block's material reads the velocities (the same on all ranks)
   std::vector<std::string> syncAfterPrecompute_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "materials/BondOptions.hpp"
+#include "materials/HalfLps.hpp"
 #include "materials/ShearCorrection.hpp"
 #include "solvers/TangentBlocks.hpp"
 
@@ -98,6 +99,10 @@ void Elastic::initialize(const ModelState& s, const std::vector<int>& points) {
 // The kernels below keep Peridigm's order of floating-point operations per bond entry, so that
 // small cases reproduce its gold results to the last bits.
 void Elastic::precompute(const ModelState& s, const std::vector<int>& points) {
+  if (s.halfBonds) {  // every owned point's, whatever `points` (blocks sharing this material)
+    halfLpsDilatation(s, weightedVolume_, thetaFactor_, dilatation_);
+    return;
+  }
   // The block's critical stretch, when the evaluator fuses it here (breaksInPrecompute).
   const bool breaks = s.breakableBondDamage != nullptr;
   withBondOptions(s, [&](auto o) {
@@ -163,6 +168,10 @@ void Elastic::computeForce(const ModelState& s, const std::vector<int>& points) 
   // per bond entry: one gathered load a bond less, the same product.
   thetaBeta_.resize(static_cast<std::size_t>(s.topology->numOverlap));
   for (int p = 0; p < s.topology->numOverlap; ++p) thetaBeta_[p] = dilatation_[p] * beta_[p];
+  if (s.halfBonds) {
+    halfLpsForce(s, thetaBeta_.data(), alpha_);
+    return;
+  }
   withBondOptions(s, [&](auto o) {
     using O = decltype(o);
     if (smooth)  // thermal strains with a smooth law are refused at set-up
@@ -311,7 +320,7 @@ void Elastic::addStiffness(const ModelState& s, const std::vector<int>& points,
       const double own = s.bondSides ? (s.bondSides[b] & 1) : 1.0;
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double intact = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      const double zeta = s.bondLength[b];
+      const double zeta = bondLengthOf(s, i, b);  // not stored with the half list
       const double vj = s.volume[j];
       const double t =
           own * intact *

@@ -22,6 +22,10 @@ class Elastic : public MaterialModel {
   // The critical stretch breaks bonds in the dilatation loop: one pass over the bonds less.
   bool fusesCriticalStretch() const override { return true; }
   bool breaksInPrecompute() const override { return true; }
+  // Both loops walk each bond once over a half list (materials/HalfLps.hpp), omega per pair
+  // included; the partial stress pass, per block, keeps the full lists.
+  bool computesOverHalfBondList() const override { return !partialStress_; }
+  bool halfBondListTakesInfluence() const override { return true; }
   void declareFields(FieldManager& fields) override;
   void initialize(const ModelState& state, const std::vector<int>& points) override;
   std::vector<std::string> fieldsToSyncAfterInitialize() const override {

@@ -4,30 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
-#include <vector>
 
-#include "neighbor/HalfBondList.hpp"
+#include "materials/HalfLoop.hpp"
 
 namespace peridot {
 
 namespace {
 
-// a b + c: one rounding with FMA hardware, two without; either way the same at every call.
-inline double mulAdd(double a, double b, double c) {
-#ifdef __FMA__
-  return std::fma(a, b, c);
-#else
-  return a * b + c;
-#endif
-}
+using half::mulAdd;
 
 template <bool kOverLength, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT>
 void halfLoop(const ModelState& s, const double* c) {
-  // The vector pass's width in pairs: 8 float damage values fill a 256-bit vector (the
-  // padding of the pair arrays allows up to kPadding).
-  constexpr int kLanes = 8;
-  static_assert(kLanes <= HalfBondList::kPadding, "a row's vector pass reads past its end");
+  constexpr int kLanes = half::kLanes;
   const Topology& t = *s.topology;
   HalfBondList& h = *s.halfBonds;
   const int n = t.numOwned;
@@ -38,11 +26,7 @@ void halfLoop(const ModelState& s, const double* c) {
   // The pairs' copy of the damage is a float whatever the run keeps (0/1 flags are exact in it;
   // a 1-byte type here would make the vector pass 32 pairs wide).
   float* pairDamage = h.pairDamage.data();
-  DamageT* full;  // the run's bond damage, written where a bond breaks
-  if constexpr (std::is_same_v<DamageT, float>)
-    full = s.breakableBondDamage;
-  else
-    full = s.breakableBondBroken;
+  DamageT* full = half::breakableDamage<DamageT>(s);  // written where a bond breaks
   const double* y = s.y;
   const double* x = s.x;
   const double* volume = s.volume;
@@ -50,22 +34,11 @@ void halfLoop(const ModelState& s, const double* c) {
   double* f = s.forceDensity;
   std::fill(f, f + 3 * static_cast<std::size_t>(n), 0.0);
 
-  // A row's pairs in two passes. The first computes each pair's direction and force scale in
-  // vector lanes (square roots and divisions are what a pair costs; no lane reads another's
-  // result, so the bits are those of a scalar loop); the second adds them to the row's point
-  // and subtracts them from the later ends, in order, and records the bonds that broke.
-  thread_local std::vector<double> scratch;
-  thread_local std::vector<int>
-      brokeNow;  // int: a 1-byte type would make the vectors 32 pairs wide
+  // A row's pairs in two passes (materials/HalfLoop.hpp).
+  const half::RowBuffers buffers = half::rowBuffers(h);
+  double *bufY0 = buffers.Y0, *bufY1 = buffers.Y1, *bufY2 = buffers.Y2, *bufQ = buffers.q;
+  int* broke = buffers.broke;
   const std::size_t rows = h.rowPoint.size();
-  const auto longest = static_cast<std::size_t>((h.longestRow + kLanes - 1) / kLanes * kLanes);
-  if (scratch.size() < 4 * longest) scratch.resize(4 * longest);
-  if (brokeNow.size() < longest) brokeNow.resize(longest);
-  double* bufY0 = scratch.data();
-  double* bufY1 = bufY0 + longest;
-  double* bufY2 = bufY1 + longest;
-  double* bufQ = bufY2 + longest;
-  int* broke = brokeNow.data();
 
   for (std::size_t r = 0; r < rows; ++r) {
     const int a = rowPoint[r];
@@ -130,16 +103,8 @@ void halfLoop(const ModelState& s, const double* c) {
     if constexpr (kBreak) {
       if (anyBroke) {
         // This rank's entries of the bonds that broke, in the full lists (once per bond).
-        for (int k = 0; k < m; ++k) {
-          if (!broke[k]) continue;
-          const std::int64_t p = p0 + k;
-          const int b = pairPoint[p];
-          full[h.fullEntry(t, r, p)] = DamageT(1);
-          if (a < n && b < n) {
-            const std::int64_t mirror = mirrorBond(t, b, a);
-            if (mirror >= 0) full[mirror] = DamageT(1);
-          }
-        }
+        for (int k = 0; k < m; ++k)
+          if (broke[k]) h.recordBreak(t, r, p0 + k, full);
       }
     }
   }
@@ -158,29 +123,17 @@ void withDamage(const ModelState& s, const double* c) {
     halfLoop<kOverLength, false, false, kStoredLength, DamageT>(s, c);
 }
 
-template <bool kOverLength>
-void withStorage(const ModelState& s, const double* c) {
-  const bool flags = s.bondBroken != nullptr;
-  if (!s.halfBonds->pairLength.empty()) {
-    if (flags)
-      withDamage<kOverLength, true, unsigned char>(s, c);
-    else
-      withDamage<kOverLength, true, float>(s, c);
-  } else {
-    if (flags)
-      withDamage<kOverLength, false, unsigned char>(s, c);
-    else
-      withDamage<kOverLength, false, float>(s, c);
-  }
-}
-
 }  // namespace
 
 void halfPairForce(const ModelState& s, const double* c, bool normalized) {
-  if (normalized)
-    withStorage<true>(s, c);
-  else
-    withStorage<false>(s, c);
+  half::withStorage(s, [&](auto stored, auto damageType) {
+    constexpr bool kStored = decltype(stored)::value;
+    using DamageT = decltype(damageType);
+    if (normalized)
+      withDamage<true, kStored, DamageT>(s, c);
+    else
+      withDamage<false, kStored, DamageT>(s, c);
+  });
 }
 
 }  // namespace peridot

@@ -207,10 +207,15 @@ class MaterialModel {
   // evaluator keeps compact broken-bond flags (1 byte a bond instead of a 4-byte float) only if
   // every block's material accepts them and every damage model is a fused critical stretch.
   virtual bool acceptsBrokenBondFlags() const { return false; }
-  // Whether computeForce walks each bond once when the evaluator hands it a half bond list
-  // (ModelState::halfBonds): a pairwise force with the linear law, no influence, no bond sides,
-  // no thermal strain, at most a fused critical stretch (ModelEvaluator::usesHalfBondList).
+  // Whether precompute and computeForce walk each bond once when the evaluator hands them a half
+  // bond list (ModelState::halfBonds): forces with the linear law, no bond sides, no thermal
+  // strain, at most a fused critical stretch (ModelEvaluator::usesHalfBondList); each call then
+  // covers every owned point. The evaluator keeps no |xi| per bond then (ModelState::bondLength
+  // null): the model's other passes compute it with referenceBondLength().
   virtual bool computesOverHalfBondList() const { return false; }
+  // Whether those loops take the influence omega per pair (HalfBondList::pairInfluence); if not,
+  // the half list is used only with omega = 1.
+  virtual bool halfBondListTakesInfluence() const { return false; }
   // Whether the model must apply its block's damage itself (it also breaks state the damage
   // pass does not know of): it then accepts only a fusable damage model (Critical Stretch).
   virtual bool requiresFusedCriticalStretch() const { return false; }

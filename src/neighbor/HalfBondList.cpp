@@ -12,7 +12,8 @@ namespace peridot {
 std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowPairOffsets.size() * sizeof(std::int64_t) +
          pairPoint.size() * sizeof(int) + pairSlot.size() * sizeof(std::uint16_t) +
-         pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float);
+         pairLength.size() * sizeof(double) + pairDamage.size() * sizeof(float) +
+         pairInfluence.size() * sizeof(double);
 }
 
 void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
@@ -26,6 +27,13 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
       if (bondDamage) pairDamage[p] = bondDamage[e];
       if (bondBroken) pairDamage[p] = bondBroken[e] ? 1.0f : 0.0f;
     }
+}
+
+void HalfBondList::gatherInfluence(const Topology& t, const double* influence) {
+  pairInfluence.assign(static_cast<std::size_t>(numPairs() + kPadding), 1.0);
+  for (std::size_t r = 0; r + 1 < rowPairOffsets.size(); ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
+      pairInfluence[p] = influence[fullEntry(t, r, p)];
 }
 
 void HalfBondList::storeLengths(const double* x) {

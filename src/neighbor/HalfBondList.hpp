@@ -15,10 +15,11 @@
 // communication). Only owned points receive force.
 //
 // The pairs carry what the loop reads, contiguous: the later end, |xi| (optional: else computed
-// from the reference positions, the same bits), and a copy of the bond damage. The full
-// (two-sided) lists stay what the rest of the code reads (outputs, checkpoints, tangents): a
-// break is written to both (recordBreak), and the copy is gathered again from the full lists
-// whenever something else rewrites them (gatherDamage: a restored trial, a restart).
+// from the reference positions, the same bits), the influence omega where it is not 1, and a
+// copy of the bond damage. The full (two-sided) lists stay what the rest of the code reads
+// (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the copy is
+// gathered again from the full lists whenever something else rewrites them (gatherDamage: a
+// restored trial, a restart).
 #include <cstdint>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct HalfBondList {
   std::vector<double> pairLength;  // per pair |xi|, or empty (computed in the loop)
   // Per pair, when the run has bond damage: a float copy of it (also of broken-bond flags).
   std::vector<float> pairDamage;
+  // Per pair omega, when the run stores an influence per bond and it is the same from either
+  // end (a function of |xi| with one horizon everywhere); empty otherwise (omega = 1).
+  std::vector<double> pairInfluence;
 
   std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
   // The most pairs of any row (a row's vector pass buffers that many).
@@ -55,6 +59,12 @@ struct HalfBondList {
   void storeLengths(const double* x);
   // Copies the run's bond damage (float or flags; null: none) into the pairs.
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
+  // Copies the per-bond influence (full lists) into the pairs.
+  void gatherInfluence(const Topology& t, const double* influence);
+  // Marks pair p of row r broken in the full lists: this rank's entry of it, and the other end's
+  // when that is owned too (once per bond).
+  template <typename DamageT>
+  void recordBreak(const Topology& t, std::size_t r, std::int64_t p, DamageT* full) const;
 };
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
@@ -66,5 +76,16 @@ bool buildHalfBondList(const Topology& topology, HalfBondList& list);
 // id), or -1 if j's row has none. Where a bond breaks (rare) the loop finds the later end's entry
 // this way: a table of them would cost 2 bytes a bond and a set-up pass of random reads.
 std::int64_t mirrorBond(const Topology& topology, int j, int i);
+
+template <typename DamageT>
+void HalfBondList::recordBreak(const Topology& t, std::size_t r, std::int64_t p,
+                               DamageT* full) const {
+  const int a = rowPoint[r], b = pairPoint[p];
+  full[fullEntry(t, r, p)] = DamageT(1);
+  if (a < t.numOwned && b < t.numOwned) {
+    const std::int64_t mirror = mirrorBond(t, b, a);
+    if (mirror >= 0) full[mirror] = DamageT(1);
+  }
+}
 
 }  // namespace peridot

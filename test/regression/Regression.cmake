@@ -64,12 +64,17 @@ peridot_identical(DamageCube ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Damage
 peridot_identical(DamageCubeCompact ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube
                   DamageCubeCompact.yaml DamageCubeCompact.e exact.comp 10000
                   "Bond loop: each bond once")
+# LPS with omega = 1/|xi| over the half bond list (dilatation and force, omega per pair).
+peridot_identical(DamageCubeLps ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/DamageCube
+                  DamageCubeLps.yaml DamageCubeLps.e exact.comp 10000
+                  "Bond loop: each bond once")
 # Partial volumes (bond weights from cell-horizon overlaps, PMB + damage): bitwise equal too.
 peridot_identical(PartialVolumes ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/PartialVolumes
                   PartialVolumes.yaml PartialVolumes.e exact.comp 10000)
-# A planar run (2D generator, plane-stress LPS, damage): bitwise equal at 1-4 ranks.
+# A planar run (2D generator, plane-stress LPS over the half list, damage): bitwise equal at
+# 1-4 ranks.
 peridot_identical(Plate2D ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/Plate2D Plate2D.yaml
-                  Plate2D.e exact_2d.comp 600)
+                  Plate2D.e exact_2d.comp 600 "Bond loop: each bond once")
 # A planar plate under Traction (the force per point divides by the loaded layer's volume, a sum
 # over ranks, now exact), Linearized LPS with LSJ-T: bitwise equal at 1-4 ranks.
 peridot_identical(TractionPlate ${CMAKE_CURRENT_SOURCE_DIR}/regression/decks/TractionPlate

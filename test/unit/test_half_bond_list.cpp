@@ -1,8 +1,9 @@
-// The half bond list (neighbor/HalfBondList.hpp) and the bond-based force over it
-// (materials/HalfPairForce.cpp): every bond once, with the right full-list entries, in curve
-// order; the same forces as the full lists' loop to rounding (another summation order) and the
-// same broken bonds to the bit; only where the scene allows it. Rank-count identity is checked
-// by the identical_DamageCube test (1 to 4 ranks, the run's log says the half list ran).
+// The half bond list (neighbor/HalfBondList.hpp) and the loops over it (the bond-based force,
+// materials/HalfPairForce.cpp; LPS, materials/HalfLps.cpp): every bond once, with the right
+// full-list entries, in curve order; the same forces as the full lists' loop to rounding (another
+// summation order) and the same broken bonds to the bit; only where the scene allows it. Rank-count
+// identity is checked by the identical_DamageCube test (1 to 4 ranks, the run's log says the half
+// list ran).
 #include <gtest/gtest.h>
 
 #include <Teuchos_ParameterList.hpp>
@@ -126,6 +127,51 @@ TEST(HalfBondList, ForceMatchesTheFullListsAndTheSameBondsBreak) {
     }
 }
 
+// LPS ("Elastic") in 3D and in plane stress, with omega = 1 and omega per pair (an expression in
+// zeta, Gaussian), over steps that break bonds: over the half list its dilatation and force are
+// the full lists' to rounding, and the same bonds break to the bit.
+TEST(HalfBondList, LpsMatchesTheFullListsAndTheSameBondsBreak) {
+  struct Case {
+    const char* mode;
+    bool planar;
+    const char* influence;
+  };
+  for (const Case c : {Case{"", false, "One"}, Case{"", false, "1.0/zeta"},
+                       Case{"Plane Stress", true, "Gaussian"}}) {
+    SCOPED_TRACE(std::string(c.mode) + " " + c.influence);
+    const int n = c.planar ? 14 : 6;
+    JitteredLattice half(n, c.planar, false, 9), full(n, c.planar, false, 9);
+    half.addBlock(peridot::testing::material("Elastic", c.mode, 1.0e9, 0.25), criticalStretch(0.01),
+                  c.influence, true, true);
+    full.addBlock(peridot::testing::material("Elastic", c.mode, 1.0e9, 0.25), criticalStretch(0.01),
+                  c.influence, true, false);
+    ASSERT_TRUE(half.evaluator->usesHalfBondList());
+    ASSERT_FALSE(full.evaluator->usesHalfBondList());
+    EXPECT_EQ(half.evaluator->halfBondList()->pairInfluence.empty(),
+              std::string(c.influence) == "One");
+    EXPECT_EQ(half.evaluator->state().bondLength, nullptr);  // the pairs keep |xi|
+    const auto dilatation = [](const JitteredLattice& L) {
+      const double* theta = L.fields->nodeField("Dilatation").data;
+      return std::vector<double>(theta, theta + L.topology.numOwned);
+    };
+    double broken = 0;
+    for (int step = 0; step <= 6; ++step) {
+      deform(half, step);
+      deform(full, step);
+      half.evaluator->evaluate(1.0);
+      full.evaluator->evaluate(1.0);
+      EXPECT_LT(relativeDifference(dilatation(half), dilatation(full)), 1e-13) << "step " << step;
+      EXPECT_LT(relativeDifference(half.force(), full.force()), 1e-13) << "step " << step;
+      EXPECT_EQ(bondDamage(half), bondDamage(full)) << "step " << step;
+      EXPECT_EQ(half.nodeDamage(), full.nodeDamage()) << "step " << step;
+      broken = 0;
+      for (float d : bondDamage(full)) broken += d;
+    }
+    EXPECT_GT(broken, 0.0);
+    EXPECT_LT(broken, static_cast<double>(full.topology.numBonds()));
+  }
+}
+
 // A solver that rejects a trial restores the bond damage: the half list reads it again.
 TEST(HalfBondList, RestoredDamageIsReadAgain) {
   JitteredLattice half(5, false, false, 2), full(5, false, false, 2);
@@ -158,9 +204,13 @@ TEST(HalfBondList, OnlyWhereTheSceneAllowsIt) {
   const auto uses = [](const char* model, const char* influence, bool varyingHorizon, bool fuse,
                        bool damage) {
     JitteredLattice L(4, false, varyingHorizon, 1);
-    L.addBlock(
-        peridot::testing::material(model, "", 1.0e9, std::string(model) == "Elastic" ? 0.25 : -1),
-        damage ? criticalStretch(0.01) : nullptr, influence, fuse);
+    L.addBlock(peridot::testing::material(
+                   model, "", 1.0e9,
+                   std::string(model).find("PMB") == std::string::npos &&
+                           std::string(model).find("Bond Based") == std::string::npos
+                       ? 0.25
+                       : -1),
+               damage ? criticalStretch(0.01) : nullptr, influence, fuse);
     return L.evaluator->usesHalfBondList();
   };
   EXPECT_TRUE(uses("Elastic Bond Based", "One", false, true, true));
@@ -169,7 +219,23 @@ TEST(HalfBondList, OnlyWhereTheSceneAllowsIt) {
   EXPECT_FALSE(uses("Elastic Bond Based", "Conical", false, true, true));  // omega per bond
   EXPECT_FALSE(uses("Elastic Bond Based", "One", true, true, true));       // one-sided bonds
   EXPECT_FALSE(uses("Elastic Bond Based", "One", false, false, true));     // a separate pass
-  EXPECT_FALSE(uses("Elastic", "One", false, true, true));                 // state-based
+  EXPECT_TRUE(uses("Elastic", "One", false, true, true));
+  EXPECT_TRUE(uses("Elastic", "Conical", false, true, true));  // omega per pair
+  EXPECT_FALSE(uses("Elastic", "One", true, true, true));
+  EXPECT_FALSE(uses("Linearized LPS", "One", false, true, true));  // its own loops
+  // Horizons that differ from point to point, though every bond is within both (no one-sided
+  // bonds): an omega of zeta and the horizon would differ between a bond's ends.
+  JitteredLattice L(4, false, false, 1);
+  double* horizon = L.fields->node("Horizon", 1);
+  horizon[0] = 2.2;
+  L.addBlock(peridot::testing::material("Elastic", "", 1.0e9, 0.25), criticalStretch(0.01),
+             "Conical", true);
+  EXPECT_FALSE(L.evaluator->usesHalfBondList());
+  // Peridigm's partial stress is summed per block over the full lists.
+  JitteredLattice P(4, false, false, 1);
+  P.addBlock(peridot::testing::material("Elastic", "Compute Partial Stress", 1.0e9, 0.25),
+             criticalStretch(0.01), "One", true);
+  EXPECT_FALSE(P.evaluator->usesHalfBondList());
 }
 
 // Blocks that share a material entry (Peridigm's "Block Names: block_1 block_2") are walked by

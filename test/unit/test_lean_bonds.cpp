@@ -227,10 +227,11 @@ TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
   }
 }
 
-// A model that reads the stored forms (LPS) still gets them: |xi| per bond and float damage.
+// A model that reads the stored forms (LPS over the full lists) still gets them: |xi| per bond
+// and float damage. (Over the half list its loops read the pairs' |xi|: HalfBondList.*.)
 TEST(LeanBonds, ModelsThatNeedStoredFormsGetThem) {
   Lattice lps(4, peridot::testing::material("Elastic", "", 1.0e9, 0.25), criticalStretch(0.01),
-              true);
+              true, false, false);
   EXPECT_FALSE(lps.evaluator->compactDamage());
   ASSERT_NE(lps.evaluator->state().bondLength, nullptr);
   ASSERT_NE(lps.evaluator->state().bondDamage, nullptr);

@@ -43,12 +43,13 @@ struct Options {
   bool smoothDamage = false;  // DTT instead of Critical Stretch
 };
 
-// A jittered n^3 lattice (spacing 1), one LPS block with a critical stretch.
+// A jittered n^3 lattice (spacing 1), one LPS block with a critical stretch, over the full
+// lists (the half list's loops are checked against these in test_half_bond_list.cpp).
 struct Lattice : peridot::testing::JitteredLattice {
   Lattice(int n, const Options& o) : JitteredLattice(n, false, o.varyingHorizon, 5) {
     addBlock(o.model == "Elastic" ? peridot::testing::material("Elastic", "", 1.0e9, 0.3)
                                   : peridot::testing::material(o.model, "", 1.0e9),
-             o.smoothDamage ? dtt(0.01) : criticalStretch(0.01), o.influence, o.fuse);
+             o.smoothDamage ? dtt(0.01) : criticalStretch(0.01), o.influence, o.fuse, false);
   }
   // y = x + a stretch along x growing with `step` plus a fixed random field.
   void deform(int step) {

@@ -1,0 +1,215 @@
+// Compiled without floating-point contraction (CMakeLists.txt), the fused multiply-adds written
+// out: a pair's terms must round alike whichever rank computes them.
+#include "materials/HalfLps.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/HalfLoop.hpp"
+
+namespace peridot {
+
+namespace {
+
+using half::mulAdd;
+
+// |xi| of pair p (row point a): stored, or from the reference positions (the same bits).
+template <bool kStoredLength>
+inline double pairZeta(const double* pairLength, const double* x, std::int64_t p, int b,
+                       const double* xa) {
+  if constexpr (kStoredLength)
+    return pairLength[p];
+  else
+    return std::sqrt(sumOfSquares(x[3 * b] - xa[0], x[3 * b + 1] - xa[1], x[3 * b + 2] - xa[2]));
+}
+
+template <bool kInfluence, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT>
+void dilatationLoop(const ModelState& s, const double* weightedVolume, double thetaFactor,
+                    double* theta) {
+  constexpr int kLanes = half::kLanes;
+  const Topology& t = *s.topology;
+  HalfBondList& h = *s.halfBonds;
+  const int n = t.numOwned;
+  const int* rowPoint = h.rowPoint.data();
+  const std::int64_t* rowPairs = h.rowPairOffsets.data();
+  const int* pairPoint = h.pairPoint.data();
+  const double* pairLength = h.pairLength.data();
+  const double* pairInfluence = h.pairInfluence.data();
+  float* pairDamage = h.pairDamage.data();
+  DamageT* full = half::breakableDamage<DamageT>(s);
+  const double *y = s.y, *x = s.x, *volume = s.volume;
+  const double criticalStretch = s.fusedCriticalStretch;
+  // The sums sum omega (1 - d) |xi| e V_j first, scaled by c / m at the end.
+  std::fill(theta, theta + n, 0.0);
+  const half::RowBuffers buffers = half::rowBuffers(h);
+  double* bufQ = buffers.q;
+  int* broke = buffers.broke;
+  const std::size_t rows = h.rowPoint.size();
+
+  for (std::size_t r = 0; r < rows; ++r) {
+    const int a = rowPoint[r];
+    const double ya0 = y[3 * a], ya1 = y[3 * a + 1], ya2 = y[3 * a + 2];
+    const double* xa = x + 3 * a;
+    const double va = volume[a];
+    const std::int64_t p0 = rowPairs[r];
+    const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    const int lanes = (m + kLanes - 1) / kLanes * kLanes;  // past the end: read, not used
+    int anyBroke = 0;
+#pragma omp simd reduction(| : anyBroke)
+    for (int k = 0; k < lanes; ++k) {
+      const std::int64_t p = p0 + k;
+      const int b = pairPoint[p];
+      const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
+      const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
+      const double zb = pairZeta<kStoredLength>(pairLength, x, p, b, xa);
+      double intact = 1.0;
+      if constexpr (kBreak) {
+        // The critical stretch as the separate damage pass applies it; no branch.
+        const float before = pairDamage[p];
+        const float now = k < m && (dY - zb) / zb > criticalStretch ? 1.0f : before;
+        pairDamage[p] = now;
+        broke[k] = now != before;
+        anyBroke |= static_cast<int>(now != before);
+      }
+      if constexpr (kDamage) intact = 1.0 - pairDamage[p];
+      const double omega = kInfluence ? pairInfluence[p] : 1.0;
+      bufQ[k] = omega * intact * zb * (dY - zb);
+    }
+    double sum = 0;
+    for (int k = 0; k < m; ++k) {
+      const int b = pairPoint[p0 + k];
+      sum = mulAdd(bufQ[k], volume[b], sum);
+      if (b < n) theta[b] = mulAdd(bufQ[k], va, theta[b]);
+    }
+    if (a < n) theta[a] += sum;
+    if constexpr (kBreak) {
+      if (anyBroke)
+        for (int k = 0; k < m; ++k)
+          if (broke[k]) h.recordBreak(t, r, p0 + k, full);
+    }
+  }
+  // A point without bonds has no weighted volume and no dilatation.
+  for (int i = 0; i < n; ++i)
+    theta[i] = weightedVolume[i] > 0 ? thetaFactor * theta[i] / weightedVolume[i] : 0.0;
+}
+
+template <bool kInfluence, bool kDamage, bool kStoredLength>
+void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha) {
+  constexpr int kLanes = half::kLanes;
+  const Topology& t = *s.topology;
+  const HalfBondList& h = *s.halfBonds;
+  const int n = t.numOwned;
+  const int* rowPoint = h.rowPoint.data();
+  const std::int64_t* rowPairs = h.rowPairOffsets.data();
+  const int* pairPoint = h.pairPoint.data();
+  const double* pairLength = h.pairLength.data();
+  const double* pairInfluence = h.pairInfluence.data();
+  const float* pairDamage = h.pairDamage.data();
+  const double *y = s.y, *x = s.x, *volume = s.volume;
+  double* f = s.forceDensity;
+  std::fill(f, f + 3 * static_cast<std::size_t>(n), 0.0);
+  const half::RowBuffers buffers = half::rowBuffers(h);
+  double *bufY0 = buffers.Y0, *bufY1 = buffers.Y1, *bufY2 = buffers.Y2, *bufQ = buffers.q;
+  const std::size_t rows = h.rowPoint.size();
+
+  for (std::size_t r = 0; r < rows; ++r) {
+    const int a = rowPoint[r];
+    const double ya0 = y[3 * a], ya1 = y[3 * a + 1], ya2 = y[3 * a + 2];
+    const double* xa = x + 3 * a;
+    const double va = volume[a], thetaBetaA = thetaBeta[a], alphaA = alpha[a];
+    const std::int64_t p0 = rowPairs[r];
+    const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    const int lanes = (m + kLanes - 1) / kLanes * kLanes;
+#pragma omp simd
+    for (int k = 0; k < lanes; ++k) {
+      const std::int64_t p = p0 + k;
+      const int b = pairPoint[p];
+      const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
+      const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
+      const double zb = pairZeta<kStoredLength>(pairLength, x, p, b, xa);
+      const double intact = kDamage ? 1.0 - pairDamage[p] : 1.0;
+      const double omega = kInfluence ? pairInfluence[p] : 1.0;
+      // t_a + t_b = (1 - d) omega ((theta beta_a + theta beta_b) |xi| + (1 - d) (alpha_a +
+      // alpha_b) e), over |Y| for the direction; none for coincident ends.
+      const double tension =
+          intact * omega *
+          ((thetaBetaA + thetaBeta[b]) * zb + intact * (alphaA + alpha[b]) * (dY - zb));
+      const double safe = dY > 0 ? dY : 1.0;
+      bufY0[k] = Y0;
+      bufY1[k] = Y1;
+      bufY2[k] = Y2;
+      bufQ[k] = dY > 0 ? tension / safe : 0.0;
+    }
+    double f0 = 0, f1 = 0, f2 = 0;
+    for (int k = 0; k < m; ++k) {
+      const int b = pairPoint[p0 + k];
+      const double sa = bufQ[k] * volume[b], sb = bufQ[k] * va;
+      f0 = mulAdd(sa, bufY0[k], f0);
+      f1 = mulAdd(sa, bufY1[k], f1);
+      f2 = mulAdd(sa, bufY2[k], f2);
+      if (b < n) {
+        f[3 * b] = mulAdd(-sb, bufY0[k], f[3 * b]);
+        f[3 * b + 1] = mulAdd(-sb, bufY1[k], f[3 * b + 1]);
+        f[3 * b + 2] = mulAdd(-sb, bufY2[k], f[3 * b + 2]);
+      }
+    }
+    if (a < n) {
+      f[3 * a] += f0;
+      f[3 * a + 1] += f1;
+      f[3 * a + 2] += f2;
+    }
+  }
+}
+
+}  // namespace
+
+void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double thetaFactor,
+                       double* dilatation) {
+  const bool influence = !s.halfBonds->pairInfluence.empty();
+  half::withStorage(s, [&](auto stored, auto damageType) {
+    constexpr bool kStored = decltype(stored)::value;
+    using DamageT = decltype(damageType);
+    const bool breaks = half::breakableDamage<DamageT>(s) != nullptr;
+    const bool damaged = s.bondDamage != nullptr || s.bondBroken != nullptr;
+    const auto run = [&](auto withInfluence) {
+      constexpr bool kInfluence = decltype(withInfluence)::value;
+      if (breaks)
+        dilatationLoop<kInfluence, true, true, kStored, DamageT>(s, weightedVolume, thetaFactor,
+                                                                 dilatation);
+      else if (damaged)
+        dilatationLoop<kInfluence, true, false, kStored, DamageT>(s, weightedVolume, thetaFactor,
+                                                                  dilatation);
+      else
+        dilatationLoop<kInfluence, false, false, kStored, DamageT>(s, weightedVolume, thetaFactor,
+                                                                   dilatation);
+    };
+    if (influence)
+      run(std::true_type{});
+    else
+      run(std::false_type{});
+  });
+}
+
+void halfLpsForce(const ModelState& s, const double* thetaBeta, const double* alpha) {
+  const bool influence = !s.halfBonds->pairInfluence.empty();
+  const bool damaged = s.bondDamage != nullptr || s.bondBroken != nullptr;
+  const bool stored = !s.halfBonds->pairLength.empty();
+  const auto run = [&](auto withInfluence, auto withDamage) {
+    constexpr bool kInfluence = decltype(withInfluence)::value;
+    constexpr bool kDamage = decltype(withDamage)::value;
+    if (stored)
+      forceLoop<kInfluence, kDamage, true>(s, thetaBeta, alpha);
+    else
+      forceLoop<kInfluence, kDamage, false>(s, thetaBeta, alpha);
+  };
+  if (influence && damaged)
+    run(std::true_type{}, std::true_type{});
+  else if (influence)
+    run(std::true_type{}, std::false_type{});
+  else if (damaged)
+    run(std::false_type{}, std::true_type{});
+  else
+    run(std::false_type{}, std::false_type{});
+}
+
+}  // namespace peridot
