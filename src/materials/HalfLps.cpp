@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "materials/HalfLoop.hpp"
 
@@ -134,11 +135,13 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
       const double tension =
           intact * omega *
           ((thetaBetaA + thetaBeta[b]) * zb + intact * (alphaA + alpha[b]) * (dY - zb));
-      const double safe = dY > 0 ? dY : 1.0;
+      // Coincident ends divide by infinity (a zero scalar) rather than select the quotient:
+      // GCC would then compute it under a mask, and masked emulated gathers do not vectorize.
+      const double safe = dY > 0 ? dY : std::numeric_limits<double>::infinity();
       bufY0[k] = Y0;
       bufY1[k] = Y1;
       bufY2[k] = Y2;
-      bufQ[k] = dY > 0 ? tension / safe : 0.0;
+      bufQ[k] = tension / safe;
     }
     double f0 = 0, f1 = 0, f2 = 0;
     for (int k = 0; k < m; ++k) {
