@@ -7,6 +7,7 @@
 // row's point and subtracts from the later ends, in order (neighbor/HalfBondList.hpp).
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -19,6 +20,11 @@ namespace peridot::half {
 // the pair arrays allows up to HalfBondList::kPadding).
 constexpr int kLanes = 8;
 static_assert(kLanes <= HalfBondList::kPadding, "a row's vector pass reads past its end");
+
+// What a pair's scalar is divided by instead of |Y| where its ends coincide (no direction): the
+// scalar is then 0 without a select of the quotient, under which GCC would compute the quotient
+// behind a mask, and masked emulated gathers (those of Zen CPUs) do not vectorize.
+constexpr double kCoincident = std::numeric_limits<double>::infinity();
 
 // a b + c: one rounding with FMA hardware, two without; either way the same at every call.
 inline double mulAdd(double a, double b, double c) {

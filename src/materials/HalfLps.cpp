@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "materials/HalfLoop.hpp"
 
@@ -135,9 +134,7 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
       const double tension =
           intact * omega *
           ((thetaBetaA + thetaBeta[b]) * zb + intact * (alphaA + alpha[b]) * (dY - zb));
-      // Coincident ends divide by infinity (a zero scalar) rather than select the quotient:
-      // GCC would then compute it under a mask, and masked emulated gathers do not vectorize.
-      const double safe = dY > 0 ? dY : std::numeric_limits<double>::infinity();
+      const double safe = dY > 0 ? dY : half::kCoincident;  // none for coincident ends
       bufY0[k] = Y0;
       bufY1[k] = Y1;
       bufY2[k] = Y2;

@@ -73,14 +73,13 @@ void halfLoop(const ModelState& s, const double* c) {
       }
       if constexpr (kDamage) c2 *= 1.0 - pairDamage[p];  // flags: 1 - 1 = 0 and 1 - 0 = 1 exactly
       // (c2 / 2) s / |Y| in one division (shared by both ends; each end then takes the other's
-      // volume); none for coincident ends.
-      const double safe = dY > 0 ? dY : 1.0;
+      // volume); none for coincident ends, which divide by infinity (half::kCoincident).
+      const double safe = dY > 0 ? dY : half::kCoincident;
       const double denominator = kOverLength ? 2.0 * zb * zb * safe : 2.0 * zb * safe;
-      const double q = c2 * (dY - zb) / denominator;
       bufY0[k] = Y0;
       bufY1[k] = Y1;
       bufY2[k] = Y2;
-      bufQ[k] = dY > 0 ? q : 0.0;
+      bufQ[k] = c2 * (dY - zb) / denominator;
     }
     double f0 = 0, f1 = 0, f2 = 0;
     for (int k = 0; k < m; ++k) {
