@@ -132,7 +132,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
-    topology_ = buildTopology(cloud, cloudHorizon, options, comm_);
+    topology_ = buildTopology(std::move(cloud), std::move(cloudHorizon), options, comm_);
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
