@@ -337,9 +337,14 @@ inline std::uint64_t maskOf(const std::int64_t* inside, int n) {
   return bits;
 }
 
+// Each bond costs one load and two stores here (the list's write position, the neighbour), so
+// the pass does not also load each list's end: a count that differs only shows when the pass
+// is over (a list that ran past its end, or short of it, has its position off its end), and
+// meanwhile a write is kept inside `out` by one compare with its size, held in a register.
 struct FillPass {
   std::vector<int> slotOf;  // per candidate: the slot of the query it is, or -1
-  std::vector<std::int64_t> next, end;
+  std::vector<std::int64_t> next;
+  std::int64_t size;  // of out
   int* out;
   [[noreturn]] static void mismatch() {
     throw std::logic_error(
@@ -356,8 +361,9 @@ struct FillPass {
     }
   }
   void found(int s, std::size_t j) {
-    if (next[s] == end[s]) mismatch();
-    out[next[s]++] = static_cast<int>(j);
+    const std::int64_t at = next[s]++;
+    if (static_cast<std::uint64_t>(at) >= static_cast<std::uint64_t>(size)) mismatch();
+    out[at] = static_cast<int>(j);
   }
 };
 
@@ -417,15 +423,15 @@ void fillNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
   pass.slotOf.assign(in.numPoints, -1);
   for (std::size_t s = 0; s < nq; ++s) pass.slotOf[queries[g.query[s]]] = static_cast<int>(s);
   pass.next.resize(nq);
-  pass.end.resize(nq);
   pass.out = out;
+  pass.size = 0;
   for (std::size_t s = 0; s < nq; ++s) {
     pass.next[s] = begin[g.query[s]];
-    pass.end[s] = pass.next[s] + counts[g.query[s]];
+    pass.size = std::max(pass.size, pass.next[s] + counts[g.query[s]]);
   }
   scanByCandidate(in, queries, g, reach, pass, true);
   for (std::size_t s = 0; s < nq; ++s)
-    if (pass.next[s] != pass.end[s]) FillPass::mismatch();
+    if (pass.next[s] != begin[g.query[s]] + counts[g.query[s]]) FillPass::mismatch();
 }
 
 }  // namespace peridot
