@@ -292,8 +292,11 @@ Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
   // Ghosts: the real points behind neighbours owned elsewhere (also of periodic images),
   // sorted by global id; one halo record of each stands for it. Images come last, sorted by
   // (global id, shift). Candidates of one global id are adjacent in identity order.
+  // Only halo candidates can become ghosts or images: without a halo (one rank, no periodic
+  // axis) the pass over every bond that marks the used candidates is skipped.
   std::vector<char> used(numCandidates, 0);
-  for (int c : t.neighbors) used[static_cast<std::size_t>(c)] = 1;
+  if (!halo.globalId.empty())
+    for (int c : t.neighbors) used[static_cast<std::size_t>(c)] = 1;
   std::vector<std::size_t> ghosts, images;  // candidate indices
   auto sameImage = [&](std::size_t c, std::size_t e) {
     return cand.globalId(c) == cand.globalId(e) && cand.code(c) == cand.code(e);
