@@ -1,5 +1,9 @@
 #include "app/Simulation.hpp"
 
+#if __has_include(<malloc.h>)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -132,7 +136,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
-    topology_ = buildTopology(cloud, cloudHorizon, options, comm_);
+    topology_ = buildTopology(std::move(cloud), std::move(cloudHorizon), options, comm_);
   }
   cloud = PointCloud();
   cloudHorizon = std::vector<double>();
@@ -371,6 +375,12 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     if (checkpoint_->exists()) resume();
   }
   control_ = std::make_unique<RunControl>(config_.restart, comm_);
+#if defined(__GLIBC__)
+  // The set-up's freed temporaries stay in the heap for reuse (main.cpp); what no later
+  // allocation took goes back to the system now, before the run: without this the peak resident
+  // size at 128^3 was 10 MB above the default allocator's, with it 45 MB below (bench/RESULTS.md).
+  malloc_trim(0);
+#endif
 }
 
 void Simulation::prepareSolver() {

@@ -318,6 +318,62 @@ struct CountPass {
   void found(int s, std::size_t) { ++perSlot[s]; }
 };
 
+// The sphere rule's count, each pair of queries tested once. A pair's squared distance has the
+// same bits from either end (x_j - x_q is the negation of x_q - x_j, and the sum of squares does
+// not see the sign), so the candidate that is the query of the lower slot tests the pair for
+// both: whether it is within the other's horizon (that query's count) and within its own (its
+// count). Such a candidate scans only the slots after its own -- the layers of cells from its
+// own up (slots are in cell order: z, y, x) and, in its own row, the slots past its own; a
+// candidate that is no query (a halo point) scans everything, for the queries' side only. Each
+// pair gets the test the fill pass gives it, so the counts are the same: half the scan of
+// countNeighbors' other rules.
+void countSphereOnce(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
+                     const QueryGrid& g, double reach, std::vector<int>& perSlot) {
+  std::vector<int> slotOf(in.numPoints, -1);
+  for (std::size_t s = 0; s < queries.size(); ++s)
+    slotOf[queries[g.query[s]]] = static_cast<int>(s);
+  const bool strict = in.rule.kind == NeighborhoodRule::Kind::SphereStrict;
+  const double* gx = g.x[0].data();
+  const double* gy = g.x[1].data();
+  const double* gz = g.x[2].data();
+  const double* h2 = g.h2.data();
+  int* count = perSlot.data();
+  constexpr int kChunk = 64;
+  for (std::size_t j = 0; j < in.numPoints; ++j) {
+    const double* xj = in.x + 3 * j;
+    int c0[3], c1[3];
+    double pad[3];
+    if (!scanRange(g, reach, xj, c0, c1, pad)) continue;
+    const int self = slotOf[j];
+    const double h2j = self >= 0 ? h2[self] : 0.0;
+    if (self >= 0) c0[2] = std::max(c0[2], g.cellOf(gz[self], 2));
+    std::int64_t own = 0;  // minus the count of j's own neighbours found here
+    auto visit = [&](int first, int last, std::size_t) {
+      if (self >= 0 && first <= self) first = self + 1;
+      const double xj0 = xj[0], xj1 = xj[1], xj2 = xj[2];
+      for (int s0 = first; s0 < last; s0 += kChunk) {
+        const int n = std::min(kChunk, last - s0);
+        // 0 or -1, as wide as the doubles (the compare's own vector mask), as in the fill pass.
+        alignas(32) std::int64_t inside[kChunk];
+        alignas(32) std::int64_t mine[kChunk];
+        for (int k = 0; k < n; ++k) {
+          const double dx = xj0 - gx[s0 + k], dy = xj1 - gy[s0 + k], dz = xj2 - gz[s0 + k];
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          inside[k] = -static_cast<std::int64_t>(strict ? d2 < h2[s0 + k] : d2 <= h2[s0 + k]);
+          mine[k] = -static_cast<std::int64_t>(strict ? d2 < h2j : d2 <= h2j);
+        }
+        int* c = count + s0;
+        for (int k = 0; k < n; ++k) {
+          c[k] -= static_cast<int>(inside[k]);
+          own += mine[k];
+        }
+      }
+    };
+    scanRows(in, g, reach, j, c0, c1, pad, visit);
+    if (self >= 0) count[self] -= static_cast<int>(own);
+  }
+}
+
 // Bit k set where inside[k] (0 or -1) is set, k < n <= 64.
 inline std::uint64_t maskOf(const std::int64_t* inside, int n) {
   std::uint64_t bits = 0;
@@ -337,9 +393,14 @@ inline std::uint64_t maskOf(const std::int64_t* inside, int n) {
   return bits;
 }
 
+// Each bond costs one load and two stores here (the list's write position, the neighbour), so
+// the pass does not also load each list's end: a count that differs only shows when the pass
+// is over (a list that ran past its end, or short of it, has its position off its end), and
+// meanwhile a write is kept inside `out` by one compare with its size, held in a register.
 struct FillPass {
   std::vector<int> slotOf;  // per candidate: the slot of the query it is, or -1
-  std::vector<std::int64_t> next, end;
+  std::vector<std::int64_t> next;
+  std::int64_t size;  // of out
   int* out;
   [[noreturn]] static void mismatch() {
     throw std::logic_error(
@@ -356,8 +417,9 @@ struct FillPass {
     }
   }
   void found(int s, std::size_t j) {
-    if (next[s] == end[s]) mismatch();
-    out[next[s]++] = static_cast<int>(j);
+    const std::int64_t at = next[s]++;
+    if (static_cast<std::uint64_t>(at) >= static_cast<std::uint64_t>(size)) mismatch();
+    out[at] = static_cast<int>(j);
   }
 };
 
@@ -379,19 +441,11 @@ void countNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t
   }
   CountPass pass;
   pass.perSlot.assign(queries.size(), 0);
-  scanByCandidate(in, queries, g, reach, pass, false);
-  const bool strict = in.rule.kind == NeighborhoodRule::Kind::SphereStrict;
-  for (std::size_t s = 0; s < queries.size(); ++s) {
-    int n = pass.perSlot[s];
-    if (sphereOnly(in)) {
-      // The sphere pass counted the query itself where its own distance, 0 (x - x for finite
-      // x), passes the test.
-      const bool finite =
-          std::isfinite(g.x[0][s]) && std::isfinite(g.x[1][s]) && std::isfinite(g.x[2][s]);
-      n -= finite && (strict ? 0.0 < g.h2[s] : 0.0 <= g.h2[s]);
-    }
-    counts[g.query[s]] = n;
-  }
+  if (sphereOnly(in))
+    countSphereOnce(in, queries, g, reach, pass.perSlot);  // a query never meets itself there
+  else
+    scanByCandidate(in, queries, g, reach, pass, false);
+  for (std::size_t s = 0; s < queries.size(); ++s) counts[g.query[s]] = pass.perSlot[s];
 }
 
 void fillNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
@@ -417,15 +471,15 @@ void fillNeighbors(const NeighborSearchInput& in, const std::vector<std::size_t>
   pass.slotOf.assign(in.numPoints, -1);
   for (std::size_t s = 0; s < nq; ++s) pass.slotOf[queries[g.query[s]]] = static_cast<int>(s);
   pass.next.resize(nq);
-  pass.end.resize(nq);
   pass.out = out;
+  pass.size = 0;
   for (std::size_t s = 0; s < nq; ++s) {
     pass.next[s] = begin[g.query[s]];
-    pass.end[s] = pass.next[s] + counts[g.query[s]];
+    pass.size = std::max(pass.size, pass.next[s] + counts[g.query[s]]);
   }
   scanByCandidate(in, queries, g, reach, pass, true);
   for (std::size_t s = 0; s < nq; ++s)
-    if (pass.next[s] != pass.end[s]) FillPass::mismatch();
+    if (pass.next[s] != begin[g.query[s]] + counts[g.query[s]]) FillPass::mismatch();
 }
 
 }  // namespace peridot

@@ -113,6 +113,11 @@ void exchange(const PointBatch& points, std::vector<Outgoing>& outgoing, MPI_Com
   MPI_Alltoallv(sendBuffer.data(), sendCounts.data(), sendDispls.data(), MPI_BYTE,
                 recvBuffer.data(), recvCounts.data(), recvDispls.data(), MPI_BYTE, comm);
   sendBuffer = std::vector<char>();
+  // At most this many records (a migrated record may carry sets): reserved so that the arrays
+  // do not grow by doubling (copies and fresh pages).
+  const std::size_t records = recvBuffer.size() / kRecordBytes;
+  received.reserve(received.size() + records);
+  if (tags) tags->reserve(tags->size() + records);
   const char* in = recvBuffer.data();
   const char* end = in + recvBuffer.size();
   while (in < end) {
@@ -133,7 +138,11 @@ void exchange(const PointBatch& points, std::vector<Outgoing>& outgoing, MPI_Com
 
 }  // namespace
 
-PointBatch migrate(const PointBatch& points, const std::vector<int>& destination, MPI_Comm comm) {
+PointBatch migrate(PointBatch points, const std::vector<int>& destination, MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  // One rank: every point stays, in its order (what the exchange would return, without a copy).
+  if (size == 1) return points;
   std::vector<Outgoing> outgoing(points.size());
   for (std::size_t p = 0; p < points.size(); ++p) outgoing[p] = {destination[p], p, -1};
   PointBatch received;

@@ -28,8 +28,9 @@ struct PointBatch {
 };
 
 // Collective: sends point p to rank destination[p]. Returns the points this rank receives,
-// in order of source rank, then of their order on the source.
-PointBatch migrate(const PointBatch& points, const std::vector<int>& destination, MPI_Comm comm);
+// in order of source rank, then of their order on the source. (Taken by value: a caller that
+// moves its batch in lends its arrays to a one-rank run.)
+PointBatch migrate(PointBatch points, const std::vector<int>& destination, MPI_Comm comm);
 
 // Collective: sends values[p] to rank destination[p], in migrate's order, so that the values
 // received line up with the points migrate(points, destination) returns.

@@ -143,34 +143,48 @@ NeighborSearchInput searchInput(const Candidates& c, const GlobalFacts& g,
   return in;
 }
 
-PointBatch batchOf(const PointCloud& cloud, const std::vector<double>& horizon) {
+// The cloud's points as a batch: its arrays are moved, not copied (at 128^3 a copy is ~100 MB
+// of fresh pages), so the cloud keeps only its sets, dimension and thickness.
+PointBatch batchOf(PointCloud& cloud, std::vector<double>& horizon) {
   PointBatch b;
-  b.globalId = cloud.globalId;
-  b.x = cloud.x;
-  b.volume = cloud.volume;
-  b.horizon = horizon;
-  b.blockId = cloud.blockId;
   // Set membership per point, from the share's sorted id lists.
-  std::vector<std::vector<int>> setsOf(cloud.size());
-  std::unordered_map<long long, std::size_t> indexOf;
-  indexOf.reserve(2 * cloud.size());
-  for (std::size_t p = 0; p < cloud.size(); ++p) indexOf[cloud.globalId[p]] = p;
-  for (std::size_t s = 0; s < cloud.pointSets.size(); ++s)
-    for (long long gid : cloud.pointSets[s].globalIds) {
-      auto it = indexOf.find(gid);
-      if (it != indexOf.end()) setsOf[it->second].push_back(static_cast<int>(s));
-    }
-  b.setOffsets.assign(1, 0);
-  for (std::size_t p = 0; p < cloud.size(); ++p) {
-    b.setIndex.insert(b.setIndex.end(), setsOf[p].begin(), setsOf[p].end());
-    b.setOffsets.push_back(static_cast<int>(b.setIndex.size()));
+  std::vector<std::vector<int>> setsOf(cloud.pointSets.empty() ? 0 : cloud.size());
+  if (!cloud.pointSets.empty()) {
+    std::unordered_map<long long, std::size_t> indexOf;
+    indexOf.reserve(2 * cloud.size());
+    for (std::size_t p = 0; p < cloud.size(); ++p) indexOf[cloud.globalId[p]] = p;
+    for (std::size_t s = 0; s < cloud.pointSets.size(); ++s)
+      for (long long gid : cloud.pointSets[s].globalIds) {
+        auto it = indexOf.find(gid);
+        if (it != indexOf.end()) setsOf[it->second].push_back(static_cast<int>(s));
+      }
   }
+  b.setOffsets.assign(cloud.size() + 1, 0);
+  for (std::size_t p = 0; p < setsOf.size(); ++p) {
+    b.setIndex.insert(b.setIndex.end(), setsOf[p].begin(), setsOf[p].end());
+    b.setOffsets[p + 1] = static_cast<int>(b.setIndex.size());
+  }
+  b.globalId = std::move(cloud.globalId);
+  b.x = std::move(cloud.x);
+  b.volume = std::move(cloud.volume);
+  b.horizon = std::move(horizon);
+  b.blockId = std::move(cloud.blockId);
+  cloud.globalId.clear();
+  cloud.x.clear();
+  cloud.volume.clear();
+  cloud.blockId.clear();
+  horizon.clear();
   return b;
 }
 
 }  // namespace
 
 Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
+                       const TopologyOptions& options, MPI_Comm comm) {
+  return buildTopology(PointCloud(cloud), std::vector<double>(horizon), options, comm);
+}
+
+Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
                        const TopologyOptions& options, MPI_Comm comm) {
   TopologyOptions opt = options;
   Topology t;
@@ -181,10 +195,10 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   if (opt.rule.kind == NeighborhoodRule::Kind::CellOverlap) {
     // Partial volumes: the search reaches half a cell diagonal beyond the horizon.
     opt.rule.dimension = cloud.dimension;
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
       opt.rule.overlapReach =
           std::max(opt.rule.overlapReach,
-                   cellOverlapReach(cellEdge(cloud.volume[i], cloud.dimension, cloud.thickness),
+                   cellOverlapReach(cellEdge(points.volume[i], cloud.dimension, cloud.thickness),
                                     cloud.dimension));
     }
     MPI_Allreduce(MPI_IN_PLACE, &opt.rule.overlapReach, 1, MPI_DOUBLE, MPI_MAX, comm);
@@ -209,7 +223,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
 
   // Partition, move the points to their owners, search among them and their halo.
   std::vector<int> owner = partitionShare(points.x, {}, comm);
-  points = migrate(points, owner, comm);
+  points = migrate(std::move(points), owner, comm);
   std::vector<int> bondCount;  // per owned point (in the order of `points`)
   if (t.numRanks > 1 && opt.weightByBondCount) {
     // Rebalance with each point weighted by its work (1 + its bonds). A point's bond count does
@@ -226,7 +240,7 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
       weight[p] = 1.0 + static_cast<double>(bondCount[p]);
     owner = partitionShare(points.x, weight, comm);
     bondCount = migrateValues(bondCount, owner, comm);
-    points = migrate(points, owner, comm);
+    points = migrate(std::move(points), owner, comm);
   }
   Candidates cand = gatherCandidates(std::move(points), facts, opt, codes, cloud.dimension,
                                      cloud.thickness, comm);
@@ -278,8 +292,11 @@ Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horiz
   // Ghosts: the real points behind neighbours owned elsewhere (also of periodic images),
   // sorted by global id; one halo record of each stands for it. Images come last, sorted by
   // (global id, shift). Candidates of one global id are adjacent in identity order.
+  // Only halo candidates can become ghosts or images: without a halo (one rank, no periodic
+  // axis) the pass over every bond that marks the used candidates is skipped.
   std::vector<char> used(numCandidates, 0);
-  for (int c : t.neighbors) used[static_cast<std::size_t>(c)] = 1;
+  if (!halo.globalId.empty())
+    for (int c : t.neighbors) used[static_cast<std::size_t>(c)] = 1;
   std::vector<std::size_t> ghosts, images;  // candidate indices
   auto sameImage = [&](std::size_t c, std::size_t e) {
     return cand.globalId(c) == cand.globalId(e) && cand.code(c) == cand.code(e);

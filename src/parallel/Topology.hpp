@@ -86,5 +86,8 @@ struct TopologyOptions {
 // neighbours of its owned points among the points within reach of its box (a halo exchange).
 Topology buildTopology(const PointCloud& cloud, const std::vector<double>& horizon,
                        const TopologyOptions& options, MPI_Comm comm);
+// The same, taking the share's arrays instead of copying them (the cloud keeps its sets).
+Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
+                       const TopologyOptions& options, MPI_Comm comm);
 
 }  // namespace peridot

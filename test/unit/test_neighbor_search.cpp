@@ -222,6 +222,14 @@ TEST(NeighborSearchByCandidate, WrongCountsAreRefused) {
   for (std::size_t i = 0; i < n; ++i) begin[i + 1] = begin[i] + counts[i];
   std::vector<int> out(static_cast<std::size_t>(begin[n]) + 8);
   EXPECT_THROW(fillNeighbors(in, allQueries(n), begin, counts, out.data()), std::logic_error);
+  // The list that ends the buffer one short: the pass must stop at the buffer's end (the fill
+  // checks each list's end only when it is over), so the guard word after it stays untouched.
+  countNeighbors(in, allQueries(n), counts);
+  counts[n - 1] -= 1;
+  for (std::size_t i = 0; i < n; ++i) begin[i + 1] = begin[i] + counts[i];
+  std::vector<int> exact(static_cast<std::size_t>(begin[n]) + 1, -7);
+  EXPECT_THROW(fillNeighbors(in, allQueries(n), begin, counts, exact.data()), std::logic_error);
+  EXPECT_EQ(exact.back(), -7);
 }
 
 }  // namespace
