@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "JitteredLattice.hpp"
 #include "Materials.hpp"
 #include "damage/CriticalStretch.hpp"
 #include "evaluator/ModelEvaluator.hpp"
@@ -240,4 +241,33 @@ TEST(LeanBonds, ModelsThatNeedStoredFormsGetThem) {
   const Topology& t = lps.topology;
   for (std::int64_t b = t.bondOffsets[0]; b < t.bondOffsets[1]; ++b)
     EXPECT_EQ(lps.evaluator->state().bondLength[b], referenceBondLength(x, 0, t.neighbors[b]));
+}
+
+// The stable-time-step sum (MaterialModel::stiffnessSum: its terms in vector lanes, then summed
+// in order) against the plain loop, to the bit: sum over the bonds within i's horizon of
+// V_j 18 K / (pi delta^4) / |xi|, with one-sided bonds (horizons that vary), with |xi| stored
+// and computed.
+TEST(LeanBonds, StiffnessSumIsThePlainSumInOrder) {
+  peridot::testing::JitteredLattice L(5, false, true, 3);
+  L.addBlock(peridot::testing::material("Elastic", "", 1.0e9, 0.25), nullptr, "One", true, false);
+  const Topology& t = L.topology;
+  ModelState s = L.evaluator->state();
+  ASSERT_NE(s.bondSides, nullptr);
+  const double K = L.blocks[0].material->bulkModulus(), pi = 3.14159265358979323846;
+  std::vector<double> zeta(static_cast<std::size_t>(t.numBonds())), expected(t.numOwned);
+  for (int i = 0; i < t.numOwned; ++i) {
+    const double d = s.horizon[i], c = 18.0 * K / (pi * d * d * d * d);
+    double total = 0;
+    for (std::int64_t b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b) {
+      zeta[b] = referenceBondLength(s.x, i, t.neighbors[b]);
+      if (s.bondSides[b] & 1) total += s.volume[t.neighbors[b]] * c / zeta[b];
+    }
+    expected[i] = total;
+  }
+  for (const bool stored : {false, true}) {
+    s.bondLength = stored ? zeta.data() : nullptr;
+    std::vector<double> sum(t.numOwned);
+    L.blocks[0].material->stiffnessSum(s, L.blocks[0].points, sum.data());
+    EXPECT_TRUE(sameBits(sum, expected)) << (stored ? "stored" : "computed");
+  }
 }
