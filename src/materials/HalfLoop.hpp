@@ -52,6 +52,33 @@ inline RowBuffers rowBuffers(const HalfBondList& h) {
   return {base, base + longest, base + 2 * longest, base + 3 * longest, brokeNow.data()};
 }
 
+// The scalar pass of a force row (row point a, its m later ends): the pair force q Y (q and Y
+// from the vector pass) times the other end's volume is added to a and subtracted from each
+// owned later end, in order; a's own sum is added after its row (only owned points, index < n,
+// receive force).
+inline void scatterForceRow(int a, int n, const int* later, int m, const double* volume,
+                            const RowBuffers& buf, double* f) {
+  const double va = volume[a];
+  double f0 = 0, f1 = 0, f2 = 0;
+  for (int k = 0; k < m; ++k) {
+    const int b = later[k];
+    const double sa = buf.q[k] * volume[b], sb = buf.q[k] * va;
+    f0 = mulAdd(sa, buf.Y0[k], f0);
+    f1 = mulAdd(sa, buf.Y1[k], f1);
+    f2 = mulAdd(sa, buf.Y2[k], f2);
+    if (b < n) {
+      f[3 * b] = mulAdd(-sb, buf.Y0[k], f[3 * b]);
+      f[3 * b + 1] = mulAdd(-sb, buf.Y1[k], f[3 * b + 1]);
+      f[3 * b + 2] = mulAdd(-sb, buf.Y2[k], f[3 * b + 2]);
+    }
+  }
+  if (a < n) {
+    f[3 * a] += f0;
+    f[3 * a + 1] += f1;
+    f[3 * a + 2] += f2;
+  }
+}
+
 // The run's bond damage in the form it keeps (float or broken-bond flags), where the fused
 // critical stretch writes its breaks.
 template <typename DamageT>

@@ -44,7 +44,7 @@ void halfLoop(const ModelState& s, const double* c) {
     const int a = rowPoint[r];
     const double ya0 = y[3 * a], ya1 = y[3 * a + 1], ya2 = y[3 * a + 2];
     const double xa0 = x[3 * a], xa1 = x[3 * a + 1], xa2 = x[3 * a + 2];
-    const double ca = c[a], va = volume[a];
+    const double ca = c[a];
     const std::int64_t p0 = rowPairs[r];
     const int m = static_cast<int>(rowPairs[r + 1] - p0);
     // In whole vectors: the lanes past the row's end compute what nobody reads and leave the
@@ -81,24 +81,7 @@ void halfLoop(const ModelState& s, const double* c) {
       bufY2[k] = Y2;
       bufQ[k] = c2 * (dY - zb) / denominator;
     }
-    double f0 = 0, f1 = 0, f2 = 0;
-    for (int k = 0; k < m; ++k) {
-      const int b = pairPoint[p0 + k];
-      const double sa = bufQ[k] * volume[b], sb = bufQ[k] * va;
-      f0 = mulAdd(sa, bufY0[k], f0);
-      f1 = mulAdd(sa, bufY1[k], f1);
-      f2 = mulAdd(sa, bufY2[k], f2);
-      if (b < n) {
-        f[3 * b] = mulAdd(-sb, bufY0[k], f[3 * b]);
-        f[3 * b + 1] = mulAdd(-sb, bufY1[k], f[3 * b + 1]);
-        f[3 * b + 2] = mulAdd(-sb, bufY2[k], f[3 * b + 2]);
-      }
-    }
-    if (a < n) {
-      f[3 * a] += f0;
-      f[3 * a + 1] += f1;
-      f[3 * a + 2] += f2;
-    }
+    half::scatterForceRow(a, n, pairPoint + p0, m, volume, buffers, f);
     if constexpr (kBreak) {
       if (anyBroke) {
         // This rank's entries of the bonds that broke, in the full lists (once per bond).
