@@ -168,6 +168,42 @@ TEST(HalfBondList, LpsMatchesTheFullListsAndTheSameBondsBreak) {
   }
 }
 
+// LPS over the half list (omega = 1/zeta) is the gradient of LPS's stored energy, which is summed
+// over the full lists: V_k f_k = -dE/dy_k with E = sum V_i W_i, by central differences.
+TEST(HalfBondList, LpsForceIsMinusTheGradientOfTheStoredEnergy) {
+  JitteredLattice L(5, false, false, 4);
+  L.addBlock(peridot::testing::material("Elastic", "", 2.0, 0.3), nullptr, "1.0/zeta", true);
+  ASSERT_TRUE(L.evaluator->usesHalfBondList());
+  double* y = L.fields->node("Coordinates", 3);
+  const double* volume = L.fields->node("Volume", 1);
+  const int n = L.topology.numOwned;
+  for (int k = 0; k < 3 * n; ++k) y[k] += 2e-3 * std::sin(1.7 * k + 0.3);
+  const auto energy = [&]() {
+    L.evaluator->evaluate(1.0);
+    std::vector<double> w(n);
+    L.blocks[0].material->storedEnergyDensity(L.evaluator->state(), L.blocks[0].points, w.data());
+    double e = 0;
+    for (int i = 0; i < n; ++i) e += volume[i] * w[i];
+    return e;
+  };
+  L.evaluator->evaluate(1.0);
+  const std::vector<double> f = L.force();
+  double worst = 0, scale = 0;
+  for (int i = 0; i < n; i += 3)
+    for (int a = 0; a < 3; ++a) {
+      const double h = 1e-7, keep = y[3 * i + a];
+      y[3 * i + a] = keep + h;
+      const double ep = energy();
+      y[3 * i + a] = keep - h;
+      const double em = energy();
+      y[3 * i + a] = keep;
+      worst = std::max(worst, std::fabs(-(ep - em) / (2 * h) - volume[i] * f[3 * i + a]));
+      scale = std::max(scale, std::fabs(volume[i] * f[3 * i + a]));
+    }
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(worst, 1e-6 * scale);
+}
+
 // A solver that rejects a trial restores the bond damage: the half list reads it again.
 TEST(HalfBondList, RestoredDamageIsReadAgain) {
   JitteredLattice half(5, false, false, 2), full(5, false, false, 2);
