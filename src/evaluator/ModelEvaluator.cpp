@@ -391,6 +391,10 @@ void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {
     snapshot.bondDamage = fields_.bondFloat("Bond_Damage");
   else
     snapshot.bondDamage.clear();
+  if (state_.bondBroken)
+    snapshot.bondBroken = fields_.bondByte("Bond_Broken");
+  else
+    snapshot.bondBroken.clear();
   snapshot.materials.resize(blocks_.size());
   for (std::size_t k = 0; k < blocks_.size(); ++k)
     blocks_[k].material->saveDamageState(snapshot.materials[k]);
@@ -400,6 +404,10 @@ void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
   if (state_.bondDamage) {
     auto& damage = fields_.bondFloat("Bond_Damage");
     std::copy(snapshot.bondDamage.begin(), snapshot.bondDamage.end(), damage.begin());
+  }
+  if (state_.bondBroken) {
+    auto& broken = fields_.bondByte("Bond_Broken");
+    std::copy(snapshot.bondBroken.begin(), snapshot.bondBroken.end(), broken.begin());
   }
   bondDamageRewritten();
   // Blocks sharing a material instance saved the same state; restoring it twice is harmless.

@@ -83,11 +83,12 @@ class ModelEvaluator {
   const ModelState& state() const { return state_; }
   // Fraction of broken bonds per owned point (0 where no damage model or no bonds).
   void nodeDamage(double* damage) const;
-  // The irreversible damage of the run (float bond damage and what materials keep themselves,
-  // MaterialModel::saveDamageState): the load-stepped solvers save it before a trial that may
-  // break bonds and restore it when they reject the trial.
+  // The irreversible damage of the run (float bond damage or broken-bond flags, and what
+  // materials keep themselves, MaterialModel::saveDamageState): the load-stepped solvers save it
+  // before a trial that may break bonds and restore it when they reject the trial.
   struct DamageSnapshot {
     std::vector<float> bondDamage;
+    std::vector<unsigned char> bondBroken;
     std::vector<std::vector<float>> materials;  // per block, in block order
   };
   void saveDamage(DamageSnapshot& snapshot) const;

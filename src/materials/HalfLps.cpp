@@ -32,6 +32,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
   const int n = t.numOwned;
   const int* rowPoint = h.rowPoint.data();
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
+  const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
   const double* pairLength = h.pairLength.data();
   const double* pairInfluence = h.pairInfluence.data();
@@ -52,7 +53,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     const double* xa = x + 3 * a;
     const double va = volume[a];
     const std::int64_t p0 = rowPairs[r];
-    const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;  // past the end: read, not used
     int anyBroke = 0;
 #pragma omp simd reduction(| : anyBroke)
@@ -83,9 +84,11 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     }
     if (a < n) theta[a] += sum;
     if constexpr (kBreak) {
-      if (anyBroke)
+      if (anyBroke) {
         for (int k = 0; k < m; ++k)
           if (broke[k]) h.recordBreak(t, r, p0 + k, full);
+        h.dropBroken(r, broke);
+      }
     }
   }
   // A point without bonds has no weighted volume and no dilatation.
@@ -101,6 +104,7 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
   const int n = t.numOwned;
   const int* rowPoint = h.rowPoint.data();
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
+  const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
   const double* pairLength = h.pairLength.data();
   const double* pairInfluence = h.pairInfluence.data();
@@ -118,7 +122,7 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
     const double* xa = x + 3 * a;
     const double thetaBetaA = thetaBeta[a], alphaA = alpha[a];
     const std::int64_t p0 = rowPairs[r];
-    const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;
 #pragma omp simd
     for (int k = 0; k < lanes; ++k) {

@@ -21,6 +21,7 @@ void halfLoop(const ModelState& s, const double* c) {
   const int n = t.numOwned;
   const int* rowPoint = h.rowPoint.data();
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
+  const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
   const double* pairLength = h.pairLength.data();
   // The pairs' copy of the damage is a float whatever the run keeps (0/1 flags are exact in it;
@@ -46,7 +47,7 @@ void halfLoop(const ModelState& s, const double* c) {
     const double xa0 = x[3 * a], xa1 = x[3 * a + 1], xa2 = x[3 * a + 2];
     const double ca = c[a];
     const std::int64_t p0 = rowPairs[r];
-    const int m = static_cast<int>(rowPairs[r + 1] - p0);
+    const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     // In whole vectors: the lanes past the row's end compute what nobody reads and leave the
     // damage they read unchanged.
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;
@@ -87,6 +88,7 @@ void halfLoop(const ModelState& s, const double* c) {
         // This rank's entries of the bonds that broke, in the full lists (once per bond).
         for (int k = 0; k < m; ++k)
           if (broke[k]) h.recordBreak(t, r, p0 + k, full);
+        h.dropBroken(r, broke);
       }
     }
   }

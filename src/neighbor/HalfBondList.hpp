@@ -45,6 +45,15 @@ struct HalfBondList {
   // end (a function of |xi| with one horizon everywhere); empty otherwise (omega = 1).
   std::vector<double> pairInfluence;
 
+  // Per row, how many of its pairs are intact. They come first, in the row's order; its broken
+  // pairs (damage 1) follow, and the loops stop before them: a broken pair's terms are zeros
+  // (1 - d = 0 times finite values), which leave every sum's bits as they are (a sum starts at +0,
+  // so to nearest it is never -0, and s + (+-0) = s for every other s), so skipping them changes
+  // no result, while a run that breaks a third of its bonds saves a third of its loop. A row is
+  // partitioned again when a pass breaks some of its pairs (dropBroken), and put back in its order
+  // when the damage is read anew (gatherDamage: a restored trial may mend bonds).
+  std::vector<int> rowIntact;
+
   std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
   // The most pairs of any row (a row's vector pass buffers that many).
   std::int64_t longestRow = 0;
@@ -57,14 +66,21 @@ struct HalfBondList {
   }
   // Fills pairLength with each pair's |xi| from the reference coordinates x (overlap-indexed).
   void storeLengths(const double* x);
-  // Copies the run's bond damage (float or flags; null: none) into the pairs.
+  // Copies the run's bond damage (float or flags; null: none) into the pairs, every row in its
+  // order with its broken pairs last (rowIntact).
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
+  // After a pass broke some of row r's intact pairs (broke[k] != 0 for its k-th pair): moves them
+  // behind the row's intact ones (which keep their order), in every per-pair array.
+  void dropBroken(std::size_t r, const int* broke);
   // Copies the per-bond influence (full lists) into the pairs.
   void gatherInfluence(const Topology& t, const double* influence);
   // Marks pair p of row r broken in the full lists: this rank's entry of it, and the other end's
   // when that is owned too (once per bond).
   template <typename DamageT>
   void recordBreak(const Topology& t, std::size_t r, std::int64_t p, DamageT* full) const;
+
+ private:
+  std::vector<double> stash_;  // dropBroken's buffer
 };
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
@@ -72,8 +88,8 @@ struct HalfBondList {
 // row longer than 65536 entries. Collective: every rank returns the same answer.
 bool buildHalfBondList(const Topology& topology, HalfBondList& list);
 
-// The full-list entry of owned point j that holds its bond to point i (rows are sorted by global
-// id), or -1 if j's row has none. Where a bond breaks (rare) the loop finds the later end's entry
+// The full-list entry of owned point j that holds its bond to point i, or -1 if j's row has
+// none. Where a bond breaks (rare) the loop finds the later end's entry
 // this way: a table of them would cost 2 bytes a bond and a set-up pass of random reads.
 std::int64_t mirrorBond(const Topology& topology, int j, int i);
 

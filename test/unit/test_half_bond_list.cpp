@@ -230,6 +230,94 @@ TEST(HalfBondList, RestoredDamageIsReadAgain) {
   EXPECT_EQ(bondDamage(half), bondDamage(full));
 }
 
+// Broken pairs leave the loops (HalfBondList::rowIntact): each row keeps its intact pairs first,
+// in the row's order, and its broken ones after them; skipping those changes no bit of the force
+// or the dilatation (their terms are zeros); a restored damage state mends them, and the rows are
+// again the ones built at the start. PMB and LPS (influence per pair), float damage and flags.
+TEST(HalfBondList, BrokenPairsLeaveTheLoopsWithoutChangingABit) {
+  struct Case {
+    const char* model;
+    const char* influence;
+    bool compact;
+  };
+  for (const Case c :
+       {Case{"Elastic Bond Based", "One", false}, Case{"Elastic Bond Based", "One", true},
+        Case{"Elastic", "1.0/zeta", false}}) {
+    SCOPED_TRACE(std::string(c.model) + (c.compact ? ", flags" : ", float damage"));
+    JitteredLattice L(6, false, false, 9);
+    const double nu = std::string(c.model) == "Elastic" ? 0.25 : -1.0;
+    L.addBlock(peridot::testing::material(c.model, "", 1.0e9, nu), criticalStretch(0.01),
+               c.influence, true, true, c.compact);
+    ASSERT_TRUE(L.evaluator->usesHalfBondList());
+    HalfBondList& h = *L.evaluator->halfBondList();
+    const HalfBondList built = h;
+    const Topology& t = L.topology;
+    ModelEvaluator::DamageSnapshot intact;
+    L.evaluator->saveDamage(intact);
+    const auto nodeField = [&](const char* name) {
+      const double* v = L.fields->nodeField(name).data;
+      return std::vector<double>(v, v + t.numOwned);
+    };
+    std::int64_t dropped = 0;
+    for (int step = 0; step <= 6; ++step) {
+      deform(L, step);
+      L.evaluator->evaluate(1.0);
+      // Every row: the same pairs as built, the intact ones first and in the row's order.
+      const std::vector<float> damage = bondDamage(L);
+      dropped = 0;
+      for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
+        const std::int64_t p0 = h.rowPairOffsets[r], p1 = h.rowPairOffsets[r + 1];
+        ASSERT_GE(h.rowIntact[r], 0);
+        ASSERT_LE(h.rowIntact[r], p1 - p0);
+        std::vector<std::pair<int, int>> pairs, pairsBuilt;
+        std::int64_t previous = -1;
+        for (std::int64_t p = p0; p < p1; ++p) {
+          const bool isIntact = p < p0 + h.rowIntact[r];
+          // The copy agrees with the full lists, and a pair is skipped if and only if broken.
+          ASSERT_EQ(h.pairDamage[p], damage[h.fullEntry(t, r, p)]);
+          ASSERT_EQ(h.pairDamage[p] == 1.0f, !isIntact) << "row " << r << " pair " << p - p0;
+          if (isIntact) {
+            const std::int64_t e = h.fullEntry(t, r, p);
+            ASSERT_LT(previous, h.rowPoint[r] < t.numOwned ? e : h.pairPoint[p]);
+            previous = h.rowPoint[r] < t.numOwned ? e : h.pairPoint[p];
+          }
+          pairs.emplace_back(h.pairPoint[p], h.pairSlot[p]);
+          pairsBuilt.emplace_back(built.pairPoint[p], built.pairSlot[p]);
+        }
+        std::sort(pairs.begin(), pairs.end());
+        std::sort(pairsBuilt.begin(), pairsBuilt.end());
+        ASSERT_EQ(pairs, pairsBuilt) << "row " << r;
+        dropped += p1 - p0 - h.rowIntact[r];
+      }
+      // The same state walked over every pair, broken ones included: the same bits.
+      const std::vector<double> force = L.force();
+      const std::vector<double> theta =
+          std::string(c.model) == "Elastic" ? nodeField("Dilatation") : std::vector<double>();
+      const std::vector<int> skipping = h.rowIntact;
+      for (std::size_t r = 0; r < h.rowPoint.size(); ++r)
+        h.rowIntact[r] = static_cast<int>(h.rowPairOffsets[r + 1] - h.rowPairOffsets[r]);
+      L.evaluator->evaluate(1.0, false);
+      EXPECT_EQ(L.force(), force) << "step " << step;
+      if (!theta.empty()) {
+        EXPECT_EQ(nodeField("Dilatation"), theta) << "step " << step;
+      }
+      h.rowIntact = skipping;
+    }
+    EXPECT_GT(dropped, 0);
+    EXPECT_LT(dropped, h.numPairs());
+    // Mended: the rows as built, every pair walked again.
+    L.evaluator->restoreDamage(intact);
+    EXPECT_EQ(h.pairPoint, built.pairPoint);
+    EXPECT_EQ(h.pairSlot, built.pairSlot);
+    EXPECT_EQ(h.pairLength, built.pairLength);
+    EXPECT_EQ(h.pairInfluence, built.pairInfluence);
+    EXPECT_EQ(h.rowIntact, built.rowIntact);
+    for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
+      ASSERT_EQ(h.rowIntact[r], h.rowPairOffsets[r + 1] - h.rowPairOffsets[r]);
+    }
+  }
+}
+
 // Where a pair's force is not the same read from either end, or damage might differ between a
 // bond's two entries, the full lists' loop runs.
 TEST(HalfBondList, OnlyWhereTheSceneAllowsIt) {
