@@ -13,7 +13,8 @@ namespace {
 
 using half::mulAdd;
 
-template <bool kOverLength, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT>
+template <bool kOverLength, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT,
+          bool kUniform>
 void halfLoop(const ModelState& s, const double* c) {
   constexpr int kLanes = half::kLanes;
   const Topology& t = *s.topology;
@@ -63,7 +64,9 @@ void halfLoop(const ModelState& s, const double* c) {
         zb = pairLength[p];
       else
         zb = std::sqrt(sumOfSquares(x[3 * b] - xa0, x[3 * b + 1] - xa1, x[3 * b + 2] - xa2));
-      double c2 = ca + c[b];
+      // One micromodulus everywhere (one material and horizon): ca + ca, the same bits as
+      // ca + c[b], without gathering c[b].
+      double c2 = kUniform ? ca + ca : ca + c[b];
       if constexpr (kBreak) {
         // The critical stretch as the separate damage pass applies it; no branch.
         const float before = pairDamage[p];
@@ -94,17 +97,26 @@ void halfLoop(const ModelState& s, const double* c) {
   }
 }
 
-template <bool kOverLength, bool kStoredLength, typename DamageT>
+template <bool kOverLength, bool kStoredLength, typename DamageT, bool kUniform>
 void withDamage(const ModelState& s, const double* c) {
   constexpr bool kFloat = std::is_same_v<DamageT, float>;
   const bool damaged = kFloat ? s.bondDamage != nullptr : s.bondBroken != nullptr;
   const bool breaks = kFloat ? s.breakableBondDamage != nullptr : s.breakableBondBroken != nullptr;
   if (breaks)
-    halfLoop<kOverLength, true, true, kStoredLength, DamageT>(s, c);
+    halfLoop<kOverLength, true, true, kStoredLength, DamageT, kUniform>(s, c);
   else if (damaged)
-    halfLoop<kOverLength, true, false, kStoredLength, DamageT>(s, c);
+    halfLoop<kOverLength, true, false, kStoredLength, DamageT, kUniform>(s, c);
   else
-    halfLoop<kOverLength, false, false, kStoredLength, DamageT>(s, c);
+    halfLoop<kOverLength, false, false, kStoredLength, DamageT, kUniform>(s, c);
+}
+
+// Whether every point the loop reads (owned and ghosts) has the same micromodulus: a pass over
+// the points, against a gather per pair.
+bool uniform(const Topology& t, const double* c) {
+  const int points = t.numOwned + t.numGhosts;
+  for (int i = 1; i < points; ++i)
+    if (c[i] != c[0]) return false;
+  return true;
 }
 
 }  // namespace
@@ -113,10 +125,15 @@ void halfPairForce(const ModelState& s, const double* c, bool normalized) {
   half::withStorage(s, [&](auto stored, auto damageType) {
     constexpr bool kStored = decltype(stored)::value;
     using DamageT = decltype(damageType);
-    if (normalized)
-      withDamage<true, kStored, DamageT>(s, c);
+    const bool same = uniform(*s.topology, c);
+    if (normalized && same)
+      withDamage<true, kStored, DamageT, true>(s, c);
+    else if (normalized)
+      withDamage<true, kStored, DamageT, false>(s, c);
+    else if (same)
+      withDamage<false, kStored, DamageT, true>(s, c);
     else
-      withDamage<false, kStored, DamageT>(s, c);
+      withDamage<false, kStored, DamageT, false>(s, c);
   });
 }
 
