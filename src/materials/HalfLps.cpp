@@ -63,14 +63,17 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
       const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
       const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
       const double zb = pairZeta<kStoredLength>(pairLength, x, p, b, xa);
+      // 1 - d; without a damage copy the row's first m pairs are intact until this pass breaks
+      // one (HalfBondList::pairDamage).
       double intact = 1.0;
       if constexpr (kBreak) {
         // The critical stretch as the separate damage pass applies it; no branch.
-        const float before = pairDamage[p];
+        const float before = kDamage ? pairDamage[p] : 0.0f;
         const float now = k < m && (dY - zb) / zb > criticalStretch ? 1.0f : before;
-        pairDamage[p] = now;
+        if constexpr (kDamage) pairDamage[p] = now;
         broke[k] = now != before;
         anyBroke |= static_cast<int>(now != before);
+        if constexpr (!kDamage) intact = 1.0 - now;
       }
       if constexpr (kDamage) intact = 1.0 - pairDamage[p];
       const double omega = kInfluence ? pairInfluence[p] : 1.0;
@@ -157,18 +160,22 @@ void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double
     constexpr bool kStored = decltype(stored)::value;
     using DamageT = decltype(damageType);
     const bool breaks = half::breakableDamage<DamageT>(s) != nullptr;
-    const bool damaged = s.bondDamage != nullptr || s.bondBroken != nullptr;
+    // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage).
+    const bool partial = !s.halfBonds->pairDamage.empty();
     const auto run = [&](auto withInfluence) {
       constexpr bool kInfluence = decltype(withInfluence)::value;
-      if (breaks)
+      if (breaks && partial)
         dilatationLoop<kInfluence, true, true, kStored, DamageT>(s, weightedVolume, thetaFactor,
                                                                  dilatation);
-      else if (damaged)
-        dilatationLoop<kInfluence, true, false, kStored, DamageT>(s, weightedVolume, thetaFactor,
+      else if (breaks)
+        dilatationLoop<kInfluence, false, true, kStored, DamageT>(s, weightedVolume, thetaFactor,
                                                                   dilatation);
+      else if (partial)
+        dilatationLoop<kInfluence, true, false, kStored, float>(s, weightedVolume, thetaFactor,
+                                                                dilatation);
       else
-        dilatationLoop<kInfluence, false, false, kStored, DamageT>(s, weightedVolume, thetaFactor,
-                                                                   dilatation);
+        dilatationLoop<kInfluence, false, false, kStored, float>(s, weightedVolume, thetaFactor,
+                                                                 dilatation);
     };
     if (influence)
       run(std::true_type{});
@@ -179,7 +186,7 @@ void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double
 
 void halfLpsForce(const ModelState& s, const double* thetaBeta, const double* alpha) {
   const bool influence = !s.halfBonds->pairInfluence.empty();
-  const bool damaged = s.bondDamage != nullptr || s.bondBroken != nullptr;
+  const bool damaged = !s.halfBonds->pairDamage.empty();  // some bond partly damaged
   const bool stored = !s.halfBonds->pairLength.empty();
   const auto run = [&](auto withInfluence, auto withDamage) {
     constexpr bool kInfluence = decltype(withInfluence)::value;

@@ -25,8 +25,8 @@ void halfLoop(const ModelState& s, const double* c) {
   const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
   const double* pairLength = h.pairLength.data();
-  // The pairs' copy of the damage is a float whatever the run keeps (0/1 flags are exact in it;
-  // a 1-byte type here would make the vector pass 32 pairs wide).
+  // The pairs' copy of the damage, if any, is a float whatever the run keeps (a 1-byte type here
+  // would make the vector pass 32 pairs wide).
   float* pairDamage = h.pairDamage.data();
   DamageT* full = half::breakableDamage<DamageT>(s);  // written where a bond breaks
   const double* y = s.y;
@@ -67,15 +67,18 @@ void halfLoop(const ModelState& s, const double* c) {
       // One micromodulus everywhere (one material and horizon): ca + ca, the same bits as
       // ca + c[b], without gathering c[b].
       double c2 = kUniform ? ca + ca : ca + c[b];
+      // The damage factor 1 - d (exact for d = 0 or 1). Without a damage copy (no partly
+      // damaged bond) the row's first m pairs are intact: d = 0 until this pass breaks one.
       if constexpr (kBreak) {
         // The critical stretch as the separate damage pass applies it; no branch.
-        const float before = pairDamage[p];
+        const float before = kDamage ? pairDamage[p] : 0.0f;
         const float now = k < m && (dY - zb) / zb > criticalStretch ? 1.0f : before;
-        pairDamage[p] = now;
+        if constexpr (kDamage) pairDamage[p] = now;
         broke[k] = now != before;
         anyBroke |= static_cast<int>(now != before);
+        if constexpr (!kDamage) c2 *= 1.0 - now;
       }
-      if constexpr (kDamage) c2 *= 1.0 - pairDamage[p];  // flags: 1 - 1 = 0 and 1 - 0 = 1 exactly
+      if constexpr (kDamage) c2 *= 1.0 - pairDamage[p];
       // (c2 / 2) s / |Y| in one division (shared by both ends; each end then takes the other's
       // volume); none for coincident ends, which divide by infinity (half::kCoincident).
       const double safe = dY > 0 ? dY : half::kCoincident;
@@ -100,14 +103,18 @@ void halfLoop(const ModelState& s, const double* c) {
 template <bool kOverLength, bool kStoredLength, typename DamageT, bool kUniform>
 void withDamage(const ModelState& s, const double* c) {
   constexpr bool kFloat = std::is_same_v<DamageT, float>;
-  const bool damaged = kFloat ? s.bondDamage != nullptr : s.bondBroken != nullptr;
   const bool breaks = kFloat ? s.breakableBondDamage != nullptr : s.breakableBondBroken != nullptr;
-  if (breaks)
+  // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage); a
+  // loop that breaks none writes no damage (any DamageT will do).
+  const bool partial = !s.halfBonds->pairDamage.empty();
+  if (breaks && partial)
     halfLoop<kOverLength, true, true, kStoredLength, DamageT, kUniform>(s, c);
-  else if (damaged)
-    halfLoop<kOverLength, true, false, kStoredLength, DamageT, kUniform>(s, c);
+  else if (breaks)
+    halfLoop<kOverLength, false, true, kStoredLength, DamageT, kUniform>(s, c);
+  else if (partial)
+    halfLoop<kOverLength, true, false, kStoredLength, float, kUniform>(s, c);
   else
-    halfLoop<kOverLength, false, false, kStoredLength, DamageT, kUniform>(s, c);
+    halfLoop<kOverLength, false, false, kStoredLength, float, kUniform>(s, c);
 }
 
 // Whether every point the loop reads (owned and ghosts) has the same micromodulus: a pass over

@@ -41,22 +41,31 @@ std::size_t HalfBondList::bytes() const {
 
 void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
                                 const unsigned char* bondBroken) {
-  const auto padded = static_cast<std::size_t>(numPairs() + kPadding);
-  pairDamage.assign(bondDamage || bondBroken ? padded : 0, 0.0f);
+  // A pair's damage as the full lists hold it (0 in a run without damage).
+  const auto damageOf = [&](std::size_t r, std::int64_t p) {
+    const std::int64_t e = fullEntry(t, r, p);
+    return bondDamage ? bondDamage[e] : (bondBroken && bondBroken[e] ? 1.0f : 0.0f);
+  };
+  // Bonds intact or broken (the critical stretch's): the rows' partition is the damage. A copy
+  // only where some bond is partly damaged.
+  bool partial = false;
+  for (std::size_t r = 0; r < rowPoint.size() && bondDamage && !partial; ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p) {
+      const float d = damageOf(r, p);
+      partial = partial || (d != 0.0f && d != 1.0f);
+    }
+  pairDamage.assign(partial ? static_cast<std::size_t>(numPairs() + kPadding) : 0, 0.0f);
   thread_local std::vector<int> order;
   for (std::size_t r = 0; r < rowPoint.size(); ++r) {
     const std::int64_t p0 = rowPairOffsets[r];
     const int m = static_cast<int>(rowPairOffsets[r + 1] - p0);
-    for (std::int64_t p = p0; p < p0 + m; ++p) {
-      const std::int64_t e = fullEntry(t, r, p);
-      if (bondDamage) pairDamage[p] = bondDamage[e];
-      if (bondBroken) pairDamage[p] = bondBroken[e] ? 1.0f : 0.0f;
-    }
+    if (partial)
+      for (std::int64_t p = p0; p < p0 + m; ++p) pairDamage[p] = damageOf(r, p);
     // The row's order (buildHalfBondList: an owned row's pairs in the order of its full list, a
     // ghost row's by owned point), then its intact pairs first.
     const bool owned = rowPoint[r] < t.numOwned;
     const auto key = [&](int k) { return owned ? int{pairSlot[p0 + k]} : pairPoint[p0 + k]; };
-    const auto intact = [&](int k) { return pairDamage.empty() || pairDamage[p0 + k] != 1.0f; };
+    const auto intact = [&](int k) { return damageOf(r, p0 + k) != 1.0f; };
     order.resize(static_cast<std::size_t>(m));
     for (int k = 0; k < m; ++k) order[k] = k;
     const auto byKey = [&](int i, int j) { return key(i) < key(j); };

@@ -15,10 +15,11 @@
 // communication). Only owned points receive force.
 //
 // The pairs carry what the loop reads, contiguous: the later end, |xi| (optional: else computed
-// from the reference positions, the same bits), the influence omega where it is not 1, and a
-// copy of the bond damage. The full (two-sided) lists stay what the rest of the code reads
-// (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the copy is
-// gathered again from the full lists whenever something else rewrites them (gatherDamage: a
+// from the reference positions, the same bits), the influence omega where it is not 1; their
+// damage is which of its row's pairs are intact (rowIntact), with a copy of its value only where
+// some bond is partly damaged. The full (two-sided) lists stay what the rest of the code reads
+// (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the rows are
+// read again from the full lists whenever something else rewrites them (gatherDamage: a
 // restored trial, a restart).
 #include <cstdint>
 #include <vector>
@@ -39,7 +40,9 @@ struct HalfBondList {
   // later end (then owned): bondOffsets[holder] + pairSlot.
   std::vector<std::uint16_t> pairSlot;
   std::vector<double> pairLength;  // per pair |xi|, or empty (computed in the loop)
-  // Per pair, when the run has bond damage: a float copy of it (also of broken-bond flags).
+  // Per pair, only where some bond on this rank is partly damaged (0 < d < 1): a copy of its
+  // damage. Empty where every bond is intact or broken (the critical stretch's damage): the
+  // intact pairs are the first rowIntact of each row, and the loops read no damage.
   std::vector<float> pairDamage;
   // Per pair omega, when the run stores an influence per bond and it is the same from either
   // end (a function of |xi| with one horizon everywhere); empty otherwise (omega = 1).
