@@ -89,11 +89,12 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     if constexpr (kBreak) {
       if (anyBroke) {
         for (int k = 0; k < m; ++k)
-          if (broke[k]) h.recordBreak(t, r, p0 + k, full);
+          if (broke[k]) h.noteBreak(t, r, p0 + k);
         h.dropBroken(r, broke);
       }
     }
   }
+  if constexpr (kBreak) h.recordBreaks(t, full);
   // A point without bonds has no weighted volume and no dilatation.
   for (int i = 0; i < n; ++i)
     theta[i] = weightedVolume[i] > 0 ? thetaFactor * theta[i] / weightedVolume[i] : 0.0;

@@ -91,13 +91,15 @@ void halfLoop(const ModelState& s, const double* c) {
     half::scatterForceRow(a, n, pairPoint + p0, m, volume, buffers, f);
     if constexpr (kBreak) {
       if (anyBroke) {
-        // This rank's entries of the bonds that broke, in the full lists (once per bond).
+        // This rank's entries of the bonds that broke, in the full lists (once per bond), at
+        // the end of the pass.
         for (int k = 0; k < m; ++k)
-          if (broke[k]) h.recordBreak(t, r, p0 + k, full);
+          if (broke[k]) h.noteBreak(t, r, p0 + k);
         h.dropBroken(r, broke);
       }
     }
   }
+  if constexpr (kBreak) h.recordBreaks(t, full);
 }
 
 template <bool kOverLength, bool kStoredLength, typename DamageT, bool kUniform>

@@ -21,6 +21,7 @@
 // (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the rows are
 // read again from the full lists whenever something else rewrites them (gatherDamage: a
 // restored trial, a restart).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -77,13 +78,23 @@ struct HalfBondList {
   void dropBroken(std::size_t r, const int* broke);
   // Copies the per-bond influence (full lists) into the pairs.
   void gatherInfluence(const Topology& t, const double* influence);
-  // Marks pair p of row r broken in the full lists: this rank's entry of it, and the other end's
-  // when that is owned too (once per bond).
+  // Notes that pair p of row r broke; recordBreaks marks the noted bonds broken in the full lists
+  // (this rank's entry of each, and the other end's when that is owned too) at the end of a pass.
+  // Together, so that the other ends' entries are found in the order of their rows: each is a
+  // search in a row that the loop does not read (a cache miss per break in row order).
+  void noteBreak(const Topology& t, std::size_t r, std::int64_t p) {
+    const int a = rowPoint[r], b = pairPoint[p];
+    brokenEntries_.push_back(fullEntry(t, r, p));
+    if (a < t.numOwned && b < t.numOwned)
+      brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 | static_cast<std::uint32_t>(a));
+  }
   template <typename DamageT>
-  void recordBreak(const Topology& t, std::size_t r, std::int64_t p, DamageT* full) const;
+  void recordBreaks(const Topology& t, DamageT* full);
 
  private:
-  std::vector<double> stash_;  // dropBroken's buffer
+  std::vector<double> stash_;                 // dropBroken's buffer
+  std::vector<std::int64_t> brokenEntries_;   // noted breaks: the entries of their earlier ends
+  std::vector<std::uint64_t> brokenMirrors_;  // and (later end, earlier end) where both owned
 };
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
@@ -97,14 +108,15 @@ bool buildHalfBondList(const Topology& topology, HalfBondList& list);
 std::int64_t mirrorBond(const Topology& topology, int j, int i);
 
 template <typename DamageT>
-void HalfBondList::recordBreak(const Topology& t, std::size_t r, std::int64_t p,
-                               DamageT* full) const {
-  const int a = rowPoint[r], b = pairPoint[p];
-  full[fullEntry(t, r, p)] = DamageT(1);
-  if (a < t.numOwned && b < t.numOwned) {
-    const std::int64_t mirror = mirrorBond(t, b, a);
+void HalfBondList::recordBreaks(const Topology& t, DamageT* full) {
+  for (const std::int64_t e : brokenEntries_) full[e] = DamageT(1);
+  std::sort(brokenMirrors_.begin(), brokenMirrors_.end());
+  for (const std::uint64_t key : brokenMirrors_) {
+    const std::int64_t mirror =
+        mirrorBond(t, static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu));
     if (mirror >= 0) full[mirror] = DamageT(1);
   }
+  brokenEntries_.clear();
+  brokenMirrors_.clear();
 }
-
 }  // namespace peridot
