@@ -58,8 +58,6 @@ class LinearizedLPS : public MaterialModel {
   enum class Fused { None, Lsjt, Dtt };
   template <Fused kFused>
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
-  template <bool Smooth>
-  void force(const ModelState& state, const std::vector<int>& points) const;
 
   double density_ = 0;
   ElasticConstants constants_;
@@ -69,7 +67,7 @@ class LinearizedLPS : public MaterialModel {
   double* dilatation_ = nullptr;
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
-  std::vector<double> scratch_;  // one point's xi.eta, strains and LSJ-T integrals (fused)
+  std::vector<double> scratch_;  // a row's dilatation terms (LSJ-T: xi.eta, strains, integrals)
 };
 
 }  // namespace peridot
