@@ -81,8 +81,8 @@ void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& poin
 // force reads them) with the very functions of the separate damage pass (LSJ-T's
 // lsjtStrains / lsjtUpdateBonds, DTT's raiseBrokenFractions), so the same bits, and that pass's
 // walk over the bond arrays is saved: the sum reads i's entries again from the cache. The update
-// loops vectorize; the sum runs in two passes (materials/LinearizedLpsRows.hpp): its terms in
-// vector lanes, their sum in order (the bits of the dilatation).
+// loops vectorize; the sum forms its terms four bonds at a time in vector lanes and adds them in
+// order (materials/LinearizedLpsRows.hpp: the bits of the one-pass scalar loop).
 template <LinearizedLPS::Fused kFused>
 void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
@@ -100,14 +100,15 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
   in.damage = kFused == Fused::None ? s.bondDamage : breakable;
   in.sides = s.bondSides;
   const llps::DilatationRow rowSum = llps::dilatationRow(in, kFused == Fused::Lsjt);
-  std::int64_t family = 0;
-  for (int i : points) family = std::max(family, offsets[i + 1] - offsets[i]);
-  // The row sum's buffer, then (LSJ-T) xi.eta, the strains and the integrals of one point.
-  scratch_.resize((kFused == Fused::Lsjt ? 4 : 1) * static_cast<std::size_t>(family));
-  double* terms = scratch_.data();
-  double* dot = kFused == Fused::Lsjt ? terms + family : nullptr;
-  double* eps = kFused == Fused::Lsjt ? dot + family : nullptr;
-  double* integral = kFused == Fused::Lsjt ? eps + family : nullptr;
+  double *dot = nullptr, *eps = nullptr, *integral = nullptr;
+  if constexpr (kFused == Fused::Lsjt) {
+    std::int64_t family = 0;
+    for (int i : points) family = std::max(family, offsets[i + 1] - offsets[i]);
+    scratch_.resize(3 * static_cast<std::size_t>(family));
+    dot = scratch_.data();
+    eps = dot + family;
+    integral = eps + family;
+  }
   for (int i : points) {
     const std::int64_t b0 = offsets[i], b1 = offsets[i + 1];
     if constexpr (kFused == Fused::Lsjt) {
@@ -117,7 +118,7 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
       raiseBrokenFractions(s.bondLaw, y, neighbors, s.bondLength, i, b0, b1, breakable);
     }
     const double m = weightedVolume_[i];
-    const double sum = rowSum(in, i, b0, b1, dot, terms);
+    const double sum = rowSum(in, i, b0, b1, dot);
     dilatation_[i] = m > 0 ? kappa_ * sum / m : 0.0;
   }
 }

@@ -67,7 +67,7 @@ class LinearizedLPS : public MaterialModel {
   double* dilatation_ = nullptr;
   double* alpha_ = nullptr;
   double* beta_ = nullptr;
-  std::vector<double> scratch_;  // a row's dilatation terms (LSJ-T: xi.eta, strains, integrals)
+  std::vector<double> scratch_;  // one point's xi.eta, strains and LSJ-T integrals (fused)
 };
 
 }  // namespace peridot

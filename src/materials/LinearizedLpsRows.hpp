@@ -1,16 +1,15 @@
 #pragma once
-// Linearized LPS's bond loops over the full bond lists (materials/LinearizedLPS.hpp), each row
-// (one point's bond entries) in two passes: a vector pass computes every bond's scalar (its
-// linearized strain, F, the force state's pair sum, the dilatation term) in lanes into a row
-// buffer, no lane reading another's result, so each value has the bits a scalar loop gives it;
-// then a short scalar pass adds the buffer up in the bond list's order. The sums are thus the
-// same, to the bit, as the one-pass scalar loops they replace: a vector reduction would
-// reassociate them and change every dilatation and force.
+// Linearized LPS's bond loops over the full bond lists (materials/LinearizedLPS.hpp), with four
+// bonds at a time in vector lanes (AVX2 and FMA; the plain scalar loop otherwise and for a row's
+// last bonds): each lane does the scalar loop's operations on its bond, no lane reading another's
+// result, so every bond's term has the bits the scalar loop gives it, and the terms are then
+// added one by one in the bond list's order. The dilatation and the force are thus the same, to
+// the bit, as the one-pass scalar loops they replace (a vector reduction would reassociate the
+// sums and change every dilatation and force).
 //
 // The arithmetic is written out as the earlier scalar loops rounded it (that file is compiled
-// with contraction, and GCC fused exactly the multiply-adds written here with mulAdd); this
-// file is compiled without contraction (CMakeLists.txt), so the roundings do not depend on how
-// the compiler arranges the two passes.
+// with contraction, and GCC fused exactly the multiply-adds written here as such); this file is
+// compiled without contraction (CMakeLists.txt), so that nothing else is fused.
 #include <cstdint>
 #include <vector>
 
@@ -32,10 +31,9 @@ struct DilatationInputs {
 
 // sum_j omega mu xi.eta V_j over the bond entries b0 .. b1 of point i that lie in i's own
 // horizon: the dilatation theta_i times m_i / kappa. xi.eta is formed from x and y, or taken
-// from xiEta[b - b0] when xiEta is given (LSJ-T's lsjtStrains formed it already). `buffer` holds
-// at least b1 - b0 doubles.
+// from xiEta[b - b0] when xiEta is given (LSJ-T's lsjtStrains formed it already).
 using DilatationRow = double (*)(const DilatationInputs& in, int i, std::int64_t b0,
-                                 std::int64_t b1, const double* xiEta, double* buffer);
+                                 std::int64_t b1, const double* xiEta);
 
 // The row sum instantiated for the inputs' options (influence, damage, bond sides) and for
 // whether xi.eta is given: chosen once per loop, so the bond loop has no branch on them.
