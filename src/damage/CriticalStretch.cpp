@@ -9,10 +9,36 @@ namespace peridot {
 
 namespace {
 
+// kStoredLength: |xi| from state.bondLength, else from the reference coordinates (same bits).
 template <bool kThermal, bool kStoredLength>
 void breakLoop(const ModelState& s, const std::vector<int>& points, double sc, double alpha,
                float* bondDamage) {
-  for (int i : points) breakStretchedBondsOf<kThermal, kStoredLength>(s, i, sc, alpha, bondDamage);
+  const std::int64_t* offsets = s.topology->bondOffsets.data();
+  const int* neighbors = s.topology->neighbors.data();
+  const double* y = s.y;
+  const double* x = s.x;
+  const double* zetaStored = s.bondLength;
+  for (int i : points) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+    const double thermal = kThermal ? alpha * s.temperatureChange[i] : 0.0;
+    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+      const int j = neighbors[b];
+      double zeta;
+      if constexpr (kStoredLength) {
+        zeta = zetaStored[b];
+      } else {
+        const double X0 = x[3 * j] - xi0, X1 = x[3 * j + 1] - xi1, X2 = x[3 * j + 2] - xi2;
+        zeta = std::sqrt(sumOfSquares(X0, X1, X2));
+      }
+      const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
+      double length = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      if (kThermal) length -= thermal * zeta;
+      const double stretch = (length - zeta) / zeta;
+      // max() keeps a broken bond broken without a branch the compiler cannot vectorize.
+      bondDamage[b] = stretch > sc ? 1.0f : bondDamage[b];
+    }
+  }
 }
 
 }  // namespace

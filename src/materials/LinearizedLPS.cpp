@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/Error.hpp"
-#include "damage/CriticalStretch.hpp"
 #include "materials/LinearizedLpsRows.hpp"
 
 namespace peridot {
@@ -68,14 +67,11 @@ void LinearizedLPS::initialize(const ModelState& s, const std::vector<int>& poin
 
 void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& points) {
   // The block's damage, when the evaluator fuses it here (breaksInPrecompute): LSJ-T's update
-  // (its first evaluation updates nothing: inactive), DTT's broken fraction or the critical
-  // stretch.
+  // (its first evaluation updates nothing: inactive) or DTT's broken fraction.
   if (s.fusedLsjt.active())
     dilatationLoop<Fused::Lsjt>(s, points);
   else if (s.breakableBondDamage && s.bondLaw.kind == BondLaw::Kind::Smooth)
     dilatationLoop<Fused::Dtt>(s, points);
-  else if (s.breakableBondDamage && s.fusedCriticalStretch > 0)
-    dilatationLoop<Fused::CriticalStretch>(s, points);
   else
     dilatationLoop<Fused::None>(s, points);
 }
@@ -83,9 +79,7 @@ void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& poin
 // theta_i = (kappa / m_i) sum_j omega mu xi.eta V_j over the bonds in i's own horizon. With
 // kFused the loop first updates the damage of every bond entry of i (one-sided ones too: the
 // force reads them) with the very functions of the separate damage pass (LSJ-T's
-// lsjtStrains / lsjtUpdateBonds, DTT's raiseBrokenFractions, the critical stretch's
-// breakStretchedBondsOf: the fused check has no thermal term, and Linearized LPS keeps |xi|), so
-// the same bits, and that pass's
+// lsjtStrains / lsjtUpdateBonds, DTT's raiseBrokenFractions), so the same bits, and that pass's
 // walk over the bond arrays is saved: the sum reads i's entries again from the cache. The update
 // loops vectorize; the sum forms its terms four bonds at a time in vector lanes and adds them in
 // order (materials/LinearizedLpsRows.hpp: the bits of the one-pass scalar loop).
@@ -122,8 +116,6 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
         lsjtUpdateBonds(lsjt, b0, b1, eps, integral, breakable);
     } else if constexpr (kFused == Fused::Dtt) {
       raiseBrokenFractions(s.bondLaw, y, neighbors, s.bondLength, i, b0, b1, breakable);
-    } else if constexpr (kFused == Fused::CriticalStretch) {
-      breakStretchedBondsOf<false, true>(s, i, s.fusedCriticalStretch, 0.0, breakable);
     }
     const double m = weightedVolume_[i];
     const double sum = rowSum(in, i, b0, b1, dot);

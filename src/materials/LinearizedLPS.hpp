@@ -36,9 +36,8 @@ class LinearizedLPS : public MaterialModel {
   PlaneMode planeMode() const override { return mode_; }
   bool acceptsInfluenceFunction(const std::string&) const override { return true; }
   bool acceptsSmoothBondLaw() const override { return true; }
-  // The block's critical stretch, LSJ-T update or DTT's damage runs in the dilatation loop (one
-  // walk over the bonds less a step): each point's dilatation reads only its own bonds' damage.
-  bool fusesCriticalStretch() const override { return true; }
+  // The block's LSJ-T update, or DTT's damage, runs in the dilatation loop (one walk over the
+  // bonds less a step): each point's dilatation reads only its own bonds' damage.
   bool breaksInPrecompute() const override { return true; }
   bool fusesLsjtUpdate() const override { return true; }
   bool fusesSmoothBreak() const override { return true; }
@@ -56,7 +55,7 @@ class LinearizedLPS : public MaterialModel {
 
  private:
   // Which damage update the dilatation loop applies to each bond before it enters the sum.
-  enum class Fused { None, CriticalStretch, Lsjt, Dtt };
+  enum class Fused { None, Lsjt, Dtt };
   template <Fused kFused>
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
 

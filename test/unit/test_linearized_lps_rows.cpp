@@ -237,7 +237,6 @@ INSTANTIATE_TEST_SUITE_P(
                       Options{"Critical Stretch", "One", false, ""},
                       Options{"Critical Stretch", "1.0/zeta", true, ""},
                       Options{"Critical Stretch", "Conical", true, "Plane Strain"},
-                      Options{"Critical Stretch", "One", true, "", false},
                       Options{"DTT", "One", true, ""},
                       Options{"DTT", "Parabolic Decay", false, "Plane Stress", false},
                       Options{"LSJ-T", "One", false, ""},
