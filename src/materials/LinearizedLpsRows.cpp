@@ -19,11 +19,12 @@ using half::mulAdd;
 
 // What a row of the force loop reads: the arrays, and the row point's own values.
 struct ForceRow {
-  const double *x, *y, *volume, *zeta, *influence, *theta, *alpha, *beta;
-  const float* damage;
-  const unsigned char* sides;
+  const double *x = nullptr, *y = nullptr, *volume = nullptr, *zeta = nullptr;
+  const double *influence = nullptr, *theta = nullptr, *alpha = nullptr, *beta = nullptr;
+  const float* damage = nullptr;
+  const unsigned char* sides = nullptr;
   BondLaw law;
-  double xi0, xi1, xi2, yi0, yi1, yi2, betaThetaI, alphaI;
+  double xi0 = 0, xi1 = 0, xi2 = 0, yi0 = 0, yi1 = 0, yi2 = 0, betaThetaI = 0, alphaI = 0;
 };
 
 // xi.eta of the bond to j, xi = x_j - x_i and eta = (y_j - y_i) - xi, summed over the
@@ -214,25 +215,18 @@ void forceLoop(const ModelState& s, const std::vector<int>& points, const double
                const double* alpha, const double* beta) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
   const int* neighbors = s.topology->neighbors.data();
-  ForceRow r{s.x,
-             s.y,
-             s.volume,
-             s.bondLength,
-             s.influence,
-             theta,
-             alpha,
-             beta,
-             s.bondDamage,
-             s.bondSides,
-             s.bondLaw,
-             0,
-             0,
-             0,
-             0,
-             0,
-             0,
-             0,
-             0};
+  ForceRow r;
+  r.x = s.x;
+  r.y = s.y;
+  r.volume = s.volume;
+  r.zeta = s.bondLength;
+  r.influence = s.influence;
+  r.theta = theta;
+  r.alpha = alpha;
+  r.beta = beta;
+  r.damage = s.bondDamage;
+  r.sides = s.bondSides;
+  r.law = s.bondLaw;
   const double *x = s.x, *y = s.y;
   double* f = s.forceDensity;
   for (int i : points) {
