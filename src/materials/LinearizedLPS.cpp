@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "materials/LinearizedLpsRows.hpp"
 
 namespace peridot {
 
@@ -80,7 +81,8 @@ void LinearizedLPS::precompute(const ModelState& s, const std::vector<int>& poin
 // force reads them) with the very functions of the separate damage pass (LSJ-T's
 // lsjtStrains / lsjtUpdateBonds, DTT's raiseBrokenFractions), so the same bits, and that pass's
 // walk over the bond arrays is saved: the sum reads i's entries again from the cache. The update
-// loops vectorize; the sum keeps its order (the bits of the dilatation) and does not.
+// loops vectorize; the sum forms its terms four bonds at a time in vector lanes and adds them in
+// order (materials/LinearizedLpsRows.hpp: the bits of the one-pass scalar loop).
 template <LinearizedLPS::Fused kFused>
 void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& points) {
   const std::int64_t* offsets = s.topology->bondOffsets.data();
@@ -89,7 +91,15 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
   const double* y = s.y;
   const LsjtStep lsjt = s.fusedLsjt;
   float* breakable = s.breakableBondDamage;
-  const float* damage = kFused == Fused::None ? s.bondDamage : breakable;
+  llps::DilatationInputs in;
+  in.neighbors = neighbors;
+  in.x = x;
+  in.y = y;
+  in.volume = s.volume;
+  in.influence = s.influence;
+  in.damage = kFused == Fused::None ? s.bondDamage : breakable;
+  in.sides = s.bondSides;
+  const llps::DilatationRow rowSum = llps::dilatationRow(in, kFused == Fused::Lsjt);
   double *dot = nullptr, *eps = nullptr, *integral = nullptr;
   if constexpr (kFused == Fused::Lsjt) {
     std::int64_t family = 0;
@@ -108,77 +118,13 @@ void LinearizedLPS::dilatationLoop(const ModelState& s, const std::vector<int>& 
       raiseBrokenFractions(s.bondLaw, y, neighbors, s.bondLength, i, b0, b1, breakable);
     }
     const double m = weightedVolume_[i];
-    double sum = 0;
-    for (std::int64_t b = b0; b < b1; ++b) {
-      if (!s.topology->ownSide(b)) continue;
-      const int j = neighbors[b];
-      // omega |xi|^2 eps = omega xi.eta
-      double xiEta;
-      if constexpr (kFused == Fused::Lsjt) {
-        xiEta = dot[b - b0];
-      } else {
-        xiEta = 0;
-        for (int d = 0; d < 3; ++d) {
-          const double xi = x[3 * j + d] - x[3 * i + d];
-          xiEta += xi * ((y[3 * j + d] - y[3 * i + d]) - xi);
-        }
-      }
-      const double omega = s.influence ? s.influence[b] : 1.0;
-      const double mu = damage ? 1.0 - damage[b] : 1.0;
-      sum += omega * mu * xiEta * s.volume[j];
-    }
+    const double sum = rowSum(in, i, b0, b1, dot);
     dilatation_[i] = m > 0 ? kappa_ * sum / m : 0.0;
   }
 }
 
-template <bool Smooth>
-void LinearizedLPS::force(const ModelState& s, const std::vector<int>& points) const {
-  const std::int64_t* offsets = s.topology->bondOffsets.data();
-  const int* neighbors = s.topology->neighbors.data();
-  const double* x = s.x;
-  const double* y = s.y;
-  const double* zeta = s.bondLength;
-  const double* theta = dilatation_;
-  const double* alpha = alpha_;
-  const double* beta = beta_;
-  const BondLaw law = s.bondLaw;
-  for (int i : points) {
-    double f[3] = {0, 0, 0};
-    const double betaThetaI = beta[i] * theta[i], alphaI = alpha[i];
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
-      const int j = neighbors[b];
-      double xi[3], dot = 0;
-      for (int d = 0; d < 3; ++d) {
-        xi[d] = x[3 * j + d] - x[3 * i + d];
-        dot += xi[d] * ((y[3 * j + d] - y[3 * i + d]) - xi[d]);
-      }
-      const double eps = dot / (zeta[b] * zeta[b]);
-      const double F = Smooth ? law.forceScalar(eps) : eps;
-      const double omega = s.influence ? s.influence[b] : 1.0;
-      const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      // t_i<xi> + t_j<-xi> over |xi| (the direction xi/|xi| takes the |xi| of t): paper 001
-      // eq. 18 as printed, mu twice on the dilatation term.
-      double ti = mu * betaThetaI + alphaI * F;
-      double tj = mu * beta[j] * theta[j] + alpha[j] * F;
-      if (s.bondSides) {  // an end whose horizon does not hold the bond exerts no force state
-        ti *= s.bondSides[b] & 1;
-        tj *= (s.bondSides[b] >> 1) & 1;
-      }
-      const double t = mu * omega * (ti + tj) * s.volume[j];
-      f[0] += t * xi[0];
-      f[1] += t * xi[1];
-      f[2] += t * xi[2];
-    }
-    for (int d = 0; d < 3; ++d) s.forceDensity[3 * i + d] = f[d];
-  }
-}
-
 void LinearizedLPS::computeForce(const ModelState& s, const std::vector<int>& points) {
-  if (s.bondLaw.kind == BondLaw::Kind::Smooth) {
-    force<true>(s, points);
-  } else {
-    force<false>(s, points);
-  }
+  llps::force(s, points, dilatation_, alpha_, beta_);
 }
 
 void LinearizedLPS::storedEnergyDensity(const ModelState& s, const std::vector<int>& points,

@@ -58,8 +58,6 @@ class LinearizedLPS : public MaterialModel {
   enum class Fused { None, Lsjt, Dtt };
   template <Fused kFused>
   void dilatationLoop(const ModelState& state, const std::vector<int>& points);
-  template <bool Smooth>
-  void force(const ModelState& state, const std::vector<int>& points) const;
 
   double density_ = 0;
   ElasticConstants constants_;
