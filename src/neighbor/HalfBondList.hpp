@@ -21,7 +21,6 @@
 // (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the rows are
 // read again from the full lists whenever something else rewrites them (gatherDamage: a
 // restored trial, a restart).
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -80,8 +79,9 @@ struct HalfBondList {
   void gatherInfluence(const Topology& t, const double* influence);
   // Notes that pair p of row r broke; recordBreaks marks the noted bonds broken in the full lists
   // (this rank's entry of each, and the other end's when that is owned too) at the end of a pass.
-  // Together, so that the other ends' entries are found in the order of their rows: each is a
-  // search in a row that the loop does not read (a cache miss per break in row order).
+  // Together: finding the other end's entry reads a full-list row that the loop does not (a cache
+  // miss per break), and independent searches in one tight loop overlap their misses (sorting
+  // them by row first cost more than it saved).
   void noteBreak(const Topology& t, std::size_t r, std::int64_t p) {
     const int a = rowPoint[r], b = pairPoint[p];
     brokenEntries_.push_back(fullEntry(t, r, p));
@@ -110,7 +110,6 @@ std::int64_t mirrorBond(const Topology& topology, int j, int i);
 template <typename DamageT>
 void HalfBondList::recordBreaks(const Topology& t, DamageT* full) {
   for (const std::int64_t e : brokenEntries_) full[e] = DamageT(1);
-  std::sort(brokenMirrors_.begin(), brokenMirrors_.end());
   for (const std::uint64_t key : brokenMirrors_) {
     const std::int64_t mirror =
         mirrorBond(t, static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu));
