@@ -55,29 +55,36 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
       partial = partial || (d != 0.0f && d != 1.0f);
     }
   pairDamage.assign(partial ? static_cast<std::size_t>(numPairs() + kPadding) : 0, 0.0f);
-  thread_local std::vector<int> order;
+  std::vector<int> order, partitioned;
   for (std::size_t r = 0; r < rowPoint.size(); ++r) {
     const std::int64_t p0 = rowPairOffsets[r];
     const int m = static_cast<int>(rowPairOffsets[r + 1] - p0);
     if (partial)
       for (std::int64_t p = p0; p < p0 + m; ++p) pairDamage[p] = damageOf(r, p);
     // The row's order (buildHalfBondList: an owned row's pairs in the order of its full list, a
-    // ghost row's by owned point), then its intact pairs first.
+    // ghost row's by owned point), then its intact pairs first. Nothing to move in a row in its
+    // order without broken pairs (every row at the start of a run).
     const bool owned = rowPoint[r] < t.numOwned;
     const auto key = [&](int k) { return owned ? int{pairSlot[p0 + k]} : pairPoint[p0 + k]; };
     const auto intact = [&](int k) { return damageOf(r, p0 + k) != 1.0f; };
+    bool inOrder = true, allIntact = true;
+    for (int k = 0; k < m; ++k) {
+      inOrder = inOrder && (k == 0 || key(k - 1) < key(k));
+      allIntact = allIntact && intact(k);
+    }
+    rowIntact[r] = m;
+    if (inOrder && allIntact) continue;
     order.resize(static_cast<std::size_t>(m));
     for (int k = 0; k < m; ++k) order[k] = k;
-    const auto byKey = [&](int i, int j) { return key(i) < key(j); };
-    if (!std::is_sorted(order.begin(), order.end(), byKey))
-      std::sort(order.begin(), order.end(), byKey);
-    const auto firstBroken = std::stable_partition(order.begin(), order.end(), intact);
-    rowIntact[r] = static_cast<int>(firstBroken - order.begin());
-    for (int k = 0; k < m; ++k)
-      if (order[k] != k) {
-        permuteRow(*this, p0, order);
-        break;
-      }
+    if (!inOrder)
+      std::sort(order.begin(), order.end(), [&](int i, int j) { return key(i) < key(j); });
+    partitioned.clear();
+    for (const int k : order)
+      if (intact(k)) partitioned.push_back(k);
+    rowIntact[r] = static_cast<int>(partitioned.size());
+    for (const int k : order)
+      if (!intact(k)) partitioned.push_back(k);
+    permuteRow(*this, p0, partitioned);
   }
 }
 
