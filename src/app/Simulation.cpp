@@ -422,6 +422,13 @@ void Simulation::prepareSolver() {
                blocks_[blockIndexOfPoint_[i]].name + ")";
       },
       dt_, stableDt_, comm_, prescribed.data());
+  VerletArrays arrays;
+  arrays.numOwned = topology_.numOwned;
+  arrays.x = x_, arrays.u = u_, arrays.v = v_, arrays.y = y_, arrays.a = a_;
+  arrays.force = f_, arrays.contactForce = fc_, arrays.bodyForce = b_;
+  arrays.density = density_.data();
+  arrays.planar = planar_;
+  verlet_ = std::make_unique<VerletStep>(arrays, dt_, prescribed.data());
 }
 
 void Simulation::openOutputs() {
@@ -469,23 +476,21 @@ void Simulation::evaluateForces(long long step) {
   if (contact_) contact_->computeForce(y_, v_, fc_);
 }
 
-void Simulation::computeAcceleration() {
-  for (int i = 0; i < topology_.numOwned; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      double force = f_[3 * i + d];
-      if (fc_) force += fc_[3 * i + d];
-      if (b_) force += b_[3 * i + d];
-      a_[3 * i + d] = force / density_[i];
-    }
+void Simulation::accelerate(long long step) {
+  DivergenceMonitor::LocalSums sums;
+  bool finite;
+  {
+    Timers::Scope t(timers_, "Integration");
+    finite = verlet_->accelerate(step > 0, *divergence_, sums);
   }
-  // Planar: nothing moves out of the plane, whatever a model computes along z.
-  if (planar_)
-    for (int i = 0; i < topology_.numOwned; ++i) a_[3 * i + 2] = 0.0;
+  checkFinite(step, time_, finite);
+  Timers::Scope t(timers_, "Divergence check");
+  divergence_->conclude(step, time_, sums);
 }
 
-void Simulation::checkFinite(long long step, double time) {
+void Simulation::checkFinite(long long step, double time, bool finite) {
   int bad = -1;
-  for (int i = 0; i < topology_.numOwned && bad < 0; ++i)
+  for (int i = 0; !finite && i < topology_.numOwned && bad < 0; ++i)
     for (int d = 0; d < 3; ++d)
       if (!std::isfinite(f_[3 * i + d]) || !std::isfinite(u_[3 * i + d])) bad = i;
   std::ostringstream msg;
@@ -539,9 +544,7 @@ void Simulation::runSolver() {
     for (int k = 0; k < 3 * topology_.numOwned; ++k) y_[k] = x_[k] + u_[k];
     if (b_) conditions_->applyBodyForce(time_, b_, topology_.numOwned);
     evaluateForces(0);
-    checkFinite(0, time_);
-    computeAcceleration();
-    divergence_->check(0, time_, a_);
+    accelerate(0);
     // A chained solver starts from the state the previous one wrote as its last record.
     if (stepOffset_ == 0) {
       outputs_->write(0, time_);
@@ -555,8 +558,6 @@ void Simulation::runSolver() {
       if (rank_ == 0) log_ << message << "\n";
   }
 
-  const double half = 0.5 * dt_;
-  const int n3 = 3 * topology_.numOwned;
   const auto start = std::chrono::steady_clock::now();
   auto lastReport = start;
   for (long long step = firstStep_; step <= numSteps_; ++step) {
@@ -565,7 +566,7 @@ void Simulation::runSolver() {
     if (contact_ && step % config_.contact.searchFrequency == 0) searchContact();
     {
       Timers::Scope t(timers_, "Integration");
-      for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
+      verlet_->kickAndDrift();
     }
     {
       Timers::Scope t(timers_, "Boundary conditions");
@@ -574,26 +575,11 @@ void Simulation::runSolver() {
       if (conditions_->hasTemperature())
         temperatureProblem_ =
             conditions_->applyPrescribedTemperature(next, temperature_, temperatureChange_);
-    }
-    {
-      Timers::Scope t(timers_, "Integration");
-      for (int k = 0; k < n3; ++k) {
-        y_[k] = x_[k] + u_[k] + dt_ * v_[k];
-        u_[k] += dt_ * v_[k];
-      }
+      verlet_->driftPrescribed();  // with the velocities the conditions gave
     }
     time_ = next;
     evaluateForces(step);
-    checkFinite(step, time_);
-    {
-      Timers::Scope t(timers_, "Integration");
-      computeAcceleration();
-      for (int k = 0; k < n3; ++k) v_[k] += half * a_[k];
-    }
-    {
-      Timers::Scope t(timers_, "Divergence check");
-      divergence_->check(step, time_, a_);
-    }
+    accelerate(step);
     if (outputs_->due(stepOffset_ + step)) outputs_->write(stepOffset_ + step, time_);
     if (observer_) observer_(stepOffset_ + step, time_);
     lastStep_ = stepOffset_ + step;

@@ -22,6 +22,7 @@
 #include "restart/Checkpoint.hpp"
 #include "restart/RunControl.hpp"
 #include "solvers/DivergenceMonitor.hpp"
+#include "solvers/VerletStep.hpp"
 
 namespace peridot {
 
@@ -94,9 +95,12 @@ class Simulation {
   // box's rate): an input error.
   void checkPeriodicBox();
   void checkVariables();
-  void computeAcceleration();
   void evaluateForces(long long step);
-  void checkFinite(long long step, double time);
+  // Throws (collectively) at a non-finite force or displacement, as VerletStep::accelerate
+  // found (`finite`), or at a non-finite prescribed temperature.
+  void checkFinite(long long step, double time, bool finite);
+  // The accelerations of step `step` and, after step 0, the second half-kick; then the checks.
+  void accelerate(long long step);
   // Stable time step (SimulationTimeStep.cpp): Peridigm's estimate, and with "Verlet Limit"
   // the Lanczos estimate of the linearized problem's true limit.
   void estimateStableTimeStep();
@@ -146,6 +150,7 @@ class Simulation {
   std::unique_ptr<Checkpoint> checkpoint_;  // with Restart
   std::unique_ptr<RunControl> control_;
   std::unique_ptr<DivergenceMonitor> divergence_;
+  std::unique_ptr<VerletStep> verlet_;  // the explicit step's passes over the points
   std::unique_ptr<QuasiStatic> quasiStatic_;
   std::unique_ptr<NOXQuasiStatic> noxQuasiStatic_;
   std::unique_ptr<DynamicRelaxation> relaxation_;

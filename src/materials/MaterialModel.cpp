@@ -117,6 +117,58 @@ void MaterialModel::checkDimension(const ModelState& s, const std::string& model
   }
 }
 
+namespace {
+
+// sum_i = sum over i's own-side bonds, in bond order, of V_j c_i / |xi| (the same bits as
+// Peridigm's loop), in three passes over a row buffer: the neighbours' data copied into
+// contiguous arrays (scalar loads), the terms' square roots and divisions in vector lanes, then
+// the terms summed in order. The one-pass loop was bound by the scalar square root and division
+// (and, while the partial-volume call shared the loop, by a stack round trip of the running sum
+// at every bond); a vector loop gathering the neighbours' coordinates was slower still
+// (bench/RESULTS.md). A bond outside the owner's horizon adds an exact zero, which leaves the
+// sum's bits as they are (the terms are positive).
+template <bool kStoredLength, bool kOneSided, typename Constant>
+void plainStiffnessSum(const ModelState& s, const std::vector<int>& points, Constant constantOf,
+                       double* sum) {
+  const Topology& t = *s.topology;
+  const std::int64_t* offsets = t.bondOffsets.data();
+  const int* neighbors = t.neighbors.data();
+  const unsigned char* sides = t.bondSides.data();
+  const double* volume = s.volume;
+  const double* x = s.x;
+  std::int64_t longest = 0;
+  for (int i : points) longest = std::max(longest, offsets[i + 1] - offsets[i]);
+  const std::size_t n = static_cast<std::size_t>(longest);
+  std::vector<double> buffer(4 * n);
+  double *X0 = buffer.data(), *X1 = X0 + n, *X2 = X1 + n, *term = X2 + n;
+  for (int i : points) {
+    const double c = constantOf(i);
+    const std::int64_t first = offsets[i];
+    const int m = static_cast<int>(offsets[i + 1] - first);
+    const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+    for (int k = 0; k < m; ++k) {
+      const int j = neighbors[first + k];
+      // The volume, or zero for a bond outside the owner's horizon: its term is then 0.
+      term[k] = kOneSided && !(sides[first + k] & 1) ? 0.0 : volume[j];
+      if (!kStoredLength) {
+        X0[k] = x[3 * j] - xi0;
+        X1[k] = x[3 * j + 1] - xi1;
+        X2[k] = x[3 * j + 2] - xi2;
+      }
+    }
+    const double* length = kStoredLength ? s.bondLength + first : nullptr;
+    for (int k = 0; k < m; ++k) {
+      const double zeta = kStoredLength ? length[k] : std::sqrt(sumOfSquares(X0[k], X1[k], X2[k]));
+      term[k] = term[k] * c / zeta;
+    }
+    double total = 0;
+    for (int k = 0; k < m; ++k) total += term[k];
+    sum[i] = total;
+  }
+}
+
+}  // namespace
+
 void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& points,
                                  double* sum) const {
   const double pi = 3.14159265358979323846;
@@ -125,24 +177,33 @@ void MaterialModel::stiffnessSum(const ModelState& s, const std::vector<int>& po
   const bool planar = s.dimension == 2;
   const double kappa =
       planar ? inPlaneBulkModulus(youngsModulus(), poissonsRatio(), planeMode()) : 0.0;
+  const double K = planar || points.empty() ? 0.0 : bulkModulus();
+  const auto constantOf = [&](int i) {
+    const double d = s.horizon[i];
+    return planar ? 12.0 * kappa / (pi * s.thickness * d * d * d) : 18.0 * K / (pi * d * d * d * d);
+  };
+  if (!s.partialVolumes) {
+    const bool stored = s.bondLength != nullptr, oneSided = !s.topology->bondSides.empty();
+    if (stored && oneSided) plainStiffnessSum<true, true>(s, points, constantOf, sum);
+    if (stored && !oneSided) plainStiffnessSum<true, false>(s, points, constantOf, sum);
+    if (!stored && oneSided) plainStiffnessSum<false, true>(s, points, constantOf, sum);
+    if (!stored && !oneSided) plainStiffnessSum<false, false>(s, points, constantOf, sum);
+    return;
+  }
   // With partial volumes each neighbour counts with the fraction of its cell inside the
   // horizon, as in the models' sums (Peridigm's estimate has no such fraction to ignore).
   CellFractionCache fractions;
   for (int i : points) {
     const double d = s.horizon[i];
-    const double c = planar ? 12.0 * kappa / (pi * s.thickness * d * d * d)
-                            : 18.0 * bulkModulus() / (pi * d * d * d * d);
+    const double c = constantOf(i);
     double total = 0;
     for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
       if (!s.topology->ownSide(b)) continue;
       const int j = s.topology->neighbors[b];
       double k = s.volume[j] * c / bondLengthOf(s, i, b);
-      if (s.partialVolumes) {
-        double xi[3];
-        for (int e = 0; e < 3; ++e) xi[e] = s.x[3 * j + e] - s.x[3 * i + e];
-        k *=
-            fractions.fraction(xi, cellEdge(s.volume[j], s.dimension, s.thickness), d, s.dimension);
-      }
+      double xi[3];
+      for (int e = 0; e < 3; ++e) xi[e] = s.x[3 * j + e] - s.x[3 * i + e];
+      k *= fractions.fraction(xi, cellEdge(s.volume[j], s.dimension, s.thickness), d, s.dimension);
       total += k;
     }
     sum[i] = total;

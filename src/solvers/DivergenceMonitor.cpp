@@ -1,5 +1,6 @@
 #include "solvers/DivergenceMonitor.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -16,48 +17,89 @@ DivergenceMonitor::DivergenceMonitor(int numOwned, const double* horizon,
       describe_(std::move(describe)),
       dt_(dt),
       stableDt_(stableDt),
-      comm_(comm),
-      free_(3 * static_cast<std::size_t>(numOwned), 1.0),
-      previous_(3 * static_cast<std::size_t>(numOwned), 0.0) {
+      comm_(comm) {
   MPI_Comm_rank(comm_, &rank_);
-  if (prescribed)
-    for (std::size_t k = 0; k < free_.size(); ++k) free_[k] = prescribed[k] != 0.0 ? 0.0 : 1.0;
+  const std::size_t n3 = 3 * static_cast<std::size_t>(numOwned);
+  bool any = false;
+  for (std::size_t k = 0; prescribed && k < n3 && !any; ++k) any = prescribed[k] != 0.0;
+  if (any) {
+    free_.resize(n3);
+    for (std::size_t k = 0; k < n3; ++k) free_[k] = prescribed[k] != 0.0 ? 0.0 : 1.0;
+  }
+}
+
+namespace {
+
+// Per point of a block: the sums' terms, and q_i^2 (squared: no square root per point) into
+// `q2`. A prescribed component counts as at rest: free = 0 multiplies it (no branch); without
+// prescribed components (kMasked false) there is no multiplication by 1.
+template <bool kMasked>
+void blockTerms(int count, const double* a, const double* previous, const double* free,
+                const double* horizon, double dt4, double* q2, DivergenceMonitor::LocalSums& s) {
+  double dot = 0, norm2 = 0, previousNorm2 = 0;
+#pragma omp simd reduction(+ : dot, norm2, previousNorm2)
+  for (int i = 0; i < count; ++i) {
+    double a2 = 0;
+    for (int d = 0; d < 3; ++d) {
+      const double ak = kMasked ? free[3 * i + d] * a[3 * i + d] : a[3 * i + d];
+      const double pk = kMasked ? free[3 * i + d] * previous[3 * i + d] : previous[3 * i + d];
+      a2 += ak * ak;
+      dot += ak * pk;
+      previousNorm2 += pk * pk;
+    }
+    norm2 += a2;
+    q2[i] = dt4 * a2 / (horizon[i] * horizon[i]);
+  }
+  s.dot += dot;
+  s.norm2 += norm2;
+  s.previousNorm2 += previousNorm2;
+}
+
+}  // namespace
+
+void DivergenceMonitor::accumulate(int begin, int count, const double* a, const double* previous,
+                                   LocalSums& sums) const {
+  double q2[kBlock];
+  const double dt4 = dt_ * dt_ * dt_ * dt_;
+  if (free_.empty())
+    blockTerms<false>(count, a, previous, nullptr, horizon_ + begin, dt4, q2, sums);
+  else
+    blockTerms<true>(count, a, previous, free_.data() + 3 * static_cast<std::size_t>(begin),
+                     horizon_ + begin, dt4, q2, sums);
+  // The first largest in point order, as one serial pass would find it (NaN never wins).
+  for (int i = 0; i < count; ++i)
+    if (q2[i] > sums.worst) {
+      sums.worst = q2[i];
+      sums.where = begin + i;
+    }
 }
 
 void DivergenceMonitor::check(long long step, double time, const double* a) {
-  // Squared q_i (no square root per point); sums for the correlation of a with the previous a.
-  double worst = 0, sums[3] = {0, 0, 0};  // a.a_prev, |a|^2, |a_prev|^2
-  int where = -1;
-  const double dt4 = dt_ * dt_ * dt_ * dt_;
-  for (int i = 0; i < numOwned_; ++i) {
-    double a2 = 0;
-    for (int d = 0; d < 3; ++d) {
-      // A prescribed component counts as at rest (a multiplication, no branch).
-      const double ak = free_[3 * i + d] * a[3 * i + d], pk = previous_[3 * i + d];
-      a2 += ak * ak;
-      sums[0] += ak * pk;
-      sums[2] += pk * pk;
-      previous_[3 * i + d] = ak;
-    }
-    sums[1] += a2;
-    const double q2 = dt4 * a2 / (horizon_[i] * horizon_[i]);
-    if (q2 > worst) {
-      worst = q2;
-      where = i;
-    }
+  const std::size_t n3 = 3 * static_cast<std::size_t>(numOwned_);
+  if (previous_.size() != n3) previous_.assign(n3, 0.0);
+  LocalSums sums;
+  for (int begin = 0; begin < numOwned_; begin += kBlock) {
+    const std::size_t at = 3 * static_cast<std::size_t>(begin);
+    accumulate(begin, std::min(kBlock, numOwned_ - begin), a + at, previous_.data() + at, sums);
   }
+  std::copy(a, a + n3, previous_.begin());
+  conclude(step, time, sums);
+}
+
+void DivergenceMonitor::conclude(long long step, double time, const LocalSums& local) {
   struct {
     double q;
     int rank;
-  } local{std::sqrt(worst), rank_}, global{0, 0};
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
+  } mine{std::sqrt(local.worst), rank_}, global{0, 0};
+  MPI_Allreduce(&mine, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
+  double sums[3] = {local.dot, local.norm2, local.previousNorm2};
   MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm_);
 
   Record r;
   r.step = step;
   r.q = global.q;
   r.owner = global.rank;
-  r.localPoint = global.rank == rank_ ? where : -1;
+  r.localPoint = global.rank == rank_ ? local.where : -1;
   const bool reversed = havePrevious_ && sums[1] > 0 && sums[2] > 0 &&
                         sums[0] < kReversal * std::sqrt(sums[1] * sums[2]);
   const bool growing = !history_.empty() && r.q > history_.back().q;

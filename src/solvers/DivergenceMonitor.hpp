@@ -24,7 +24,9 @@
 // a fully prescribed run is never stopped, however large the prescribed deformation).
 //
 // It only reads the accelerations: no result changes. Each step costs one pass over the owned
-// accelerations, a copy of them, and two small MPI_Allreduce calls.
+// accelerations (check: also a copy of them; a caller whose own pass over the points still holds
+// the previous check's accelerations gives them to accumulate() instead, without the copy), and
+// two small MPI_Allreduce calls.
 #include <mpi.h>
 
 #include <deque>
@@ -46,6 +48,23 @@ class DivergenceMonitor {
   // Collective, after the accelerations of `step` are computed (steps in increasing order).
   // Throws RunError on every rank (marked collective) when the run diverges.
   void check(long long step, double time, const double* acceleration);
+
+  // A check in two parts, for a caller that passes over the points anyway (solvers/VerletStep):
+  // accumulate() over the owned points in increasing blocks, then conclude() (collective).
+  // The sums' order of additions is the vector lanes' (they only decide threshold tests, and are
+  // summed over the ranks anyway); the largest q_i and its point are found exactly.
+  struct LocalSums {
+    double worst = 0;  // the largest q_i^2 so far, at point `where` (-1: none > 0)
+    int where = -1;
+    double dot = 0, norm2 = 0, previousNorm2 = 0;  // a.a_prev, |a|^2, |a_prev|^2
+  };
+  // Points [begin, begin + count), at most kBlock: `a` and `previous` (this check's and the
+  // last check's accelerations, all components, prescribed ones included) start at the block's
+  // first point.
+  static constexpr int kBlock = 256;
+  void accumulate(int begin, int count, const double* a, const double* previous,
+                  LocalSums& sums) const;
+  void conclude(long long step, double time, const LocalSums& sums);
 
   // The q of the last check, over all ranks (for tests and measurements).
   double lastMaximum() const { return history_.empty() ? 0.0 : history_.back().q; }
@@ -78,8 +97,9 @@ class DivergenceMonitor {
   double dt_, stableDt_;
   MPI_Comm comm_;
   int rank_ = 0;
-  std::vector<double> free_;      // 3 per owned point: 1 for a free component, 0 if prescribed
-  std::vector<double> previous_;  // a of the previous check (free components), owned points
+  // 3 per owned point: 1 for a free component, 0 if prescribed; empty when none is prescribed.
+  std::vector<double> free_;
+  std::vector<double> previous_;  // check(): a of the previous check, owned points
   bool havePrevious_ = false;
   int run_ = 0;                 // consecutive steps of growth with reversal
   std::deque<Record> history_;  // oldest first, back to the start of the current run
