@@ -3,10 +3,30 @@
 #endif
 
 #include <climits>
+#include <cstdlib>
+#include <initializer_list>
 
 #include "app/Application.hpp"
 
+namespace {
+
+// A process started without a launcher (`peridot deck.xml`: an MPI singleton) runs alone, and
+// Open MPI's default start-up for it costs ~0.35 s here (bench/RESULTS.md): it starts a helper
+// daemon, and it opens the Omni-Path transport, whose library calibrates a clock at load. Alone,
+// neither is needed: the singleton is told to stay isolated and to use the plain point-to-point
+// layer, unless the user set these (setenv does not overwrite). A process started by mpirun,
+// srun or another launcher (its rank in the environment) is left as its site configures it.
+void quickSingletonStart() {
+  for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+    if (std::getenv(launched)) return;
+  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  setenv("OMPI_MCA_pml", "ob1", 0);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  quickSingletonStart();
 #if defined(__GLIBC__)
   // The set-up allocates and frees many arrays of tens to hundreds of MB (point batches, the
   // search's grids, exchange buffers) before the bond arrays. By default glibc maps each
