@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/MulAdd.hpp"
+
 namespace peridot {
 
 struct BondLaw {
@@ -38,17 +40,16 @@ struct BondLaw {
     if (s > s0Plus) {
       const double t = s < s1Plus ? s : s1Plus;
       // 1/2 S0+^2 + integral_{S0+}^{t} S0+ (S1+ - x) / (S1+ - S0+) dx
-      const double w = s1Plus - s0Plus;
-      return 0.5 * s0Plus * s0Plus +
-             s0Plus * ((s1Plus - s0Plus) * (s1Plus - s0Plus) - (s1Plus - t) * (s1Plus - t)) /
-                 (2.0 * w);
+      // (the multiply-adds written out as an optimised build contracts them: every build gives
+      // the same bits)
+      const double w = s1Plus - s0Plus, tail = (s1Plus - t) * (s1Plus - t);
+      return mulAdd(0.5 * s0Plus, s0Plus, s0Plus * mulAdd(w, w, -tail) / (2.0 * w));
     }
     const double t = s > s1Minus ? s : s1Minus;
     // 1/2 S0-^2 + integral_{S0-}^{t} S0- (x - S1-) / (S0- - S1-) dx  (t < S0-, so it adds)
     const double w = s0Minus - s1Minus;
-    return 0.5 * s0Minus * s0Minus +
-           s0Minus * ((t - s1Minus) * (t - s1Minus) - (s0Minus - s1Minus) * (s0Minus - s1Minus)) /
-               (2.0 * w);
+    return mulAdd(0.5 * s0Minus, s0Minus,
+                  s0Minus * mulAdd(t - s1Minus, t - s1Minus, -(w * w)) / (2.0 * w));
   }
 };
 

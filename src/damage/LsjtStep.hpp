@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/MulAdd.hpp"
+
 namespace peridot {
 
 // j_s of paper 001 eq. 20: (x/S_c - 1)^5 / (1 + (x/S_c)^5) for x >= S_c, else 0.
@@ -45,10 +47,12 @@ inline int lsjtStrains(const double* x, const double* y, const int* neighbors, c
   for (std::int64_t b = b0; b < b1; ++b) {
     const int j = neighbors[b];
     const double X0 = x[3 * j] - xi0, X1 = x[3 * j + 1] - xi1, X2 = x[3 * j + 2] - xi2;
-    double d = 0;
-    d += X0 * ((y[3 * j] - yi0) - X0);
-    d += X1 * ((y[3 * j + 1] - yi1) - X1);
-    d += X2 * ((y[3 * j + 2] - yi2) - X2);
+    // The multiply-adds written out (what an optimised build contracts them to): the dilatation
+    // that reads this xi.eta has the same bits as the one that forms it (LinearizedLpsRows), in
+    // every build.
+    double d = mulAdd(X0, (y[3 * j] - yi0) - X0, 0.0);
+    d = mulAdd(X1, (y[3 * j + 1] - yi1) - X1, d);
+    d = mulAdd(X2, (y[3 * j + 2] - yi2) - X2, d);
     dot[b - b0] = d;
     eps[b - b0] = d / (zeta[b] * zeta[b]);
     over |= eps[b - b0] >= criticalStretch ? 1 : 0;

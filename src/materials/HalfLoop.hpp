@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/MulAdd.hpp"
 #include "materials/MaterialModel.hpp"
 #include "neighbor/HalfBondList.hpp"
 
@@ -27,13 +28,7 @@ static_assert(kLanes <= HalfBondList::kPadding, "a row's vector pass reads past 
 constexpr double kCoincident = std::numeric_limits<double>::infinity();
 
 // a b + c: one rounding with FMA hardware, two without; either way the same at every call.
-inline double mulAdd(double a, double b, double c) {
-#ifdef __FMA__
-  return std::fma(a, b, c);
-#else
-  return a * b + c;
-#endif
-}
+using peridot::mulAdd;
 
 // A row's buffers: the bond vector Y, the pair's scalar, and which pairs broke in this pass
 // (int: a 1-byte type would make the vectors 32 pairs wide). Sized for the longest row.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "core/MulAdd.hpp"
 #include "materials/LinearizedLpsRows.hpp"
 
 namespace peridot {
@@ -134,23 +135,26 @@ void LinearizedLPS::storedEnergyDensity(const ModelState& s, const std::vector<i
   // W = c1 / (2 kappa) theta^2 + c2 sum omega |xi|^2 p(eps) mu V, p' = F (p = eps^2/2 when
   // linear): the potential of the force with mu once on the dilatation term.
   const double a = c1_ / (2.0 * kappa_);
+  // The multiply-adds written out as an optimised build contracts them, so that every build
+  // gives the same bits (an unoptimised one contracts none).
   for (int i : points) {
     double bonds = 0;
+    const double *xi = s.x + 3 * i, *yi = s.y + 3 * i;
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       if (!s.topology->ownSide(b)) continue;
       const int j = neighbors[b];
-      double dot = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double xi = s.x[3 * j + d] - s.x[3 * i + d];
-        dot += xi * ((s.y[3 * j + d] - s.y[3 * i + d]) - xi);
-      }
+      const double *xj = s.x + 3 * j, *yj = s.y + 3 * j;
+      const double X0 = xj[0] - xi[0], X1 = xj[1] - xi[1], X2 = xj[2] - xi[2];
+      double dot = mulAdd(X0, (yj[0] - yi[0]) - X0, 0.0);
+      dot = mulAdd(X1, (yj[1] - yi[1]) - X1, dot);
+      dot = mulAdd(X2, (yj[2] - yi[2]) - X2, dot);
       const double z2 = s.bondLength[b] * s.bondLength[b];
       const double eps = dot / z2;
       const double omega = s.influence ? s.influence[b] : 1.0;
       const double mu = s.bondDamage ? 1.0 - s.bondDamage[b] : 1.0;
-      bonds += omega * z2 * s.bondLaw.potential(eps) * mu * s.volume[j];
+      bonds = mulAdd(omega * z2 * s.bondLaw.potential(eps) * mu, s.volume[j], bonds);
     }
-    energyDensity[i] = a * dilatation_[i] * dilatation_[i] + alpha_[i] * bonds;
+    energyDensity[i] = mulAdd(a * dilatation_[i], dilatation_[i], alpha_[i] * bonds);
   }
 }
 

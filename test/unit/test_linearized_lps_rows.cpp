@@ -22,6 +22,7 @@
 
 #include "JitteredLattice.hpp"
 #include "Materials.hpp"
+#include "core/MulAdd.hpp"
 #include "damage/DamageModel.hpp"
 #include "evaluator/ModelEvaluator.hpp"
 #include "materials/LinearizedLPS.hpp"
@@ -101,7 +102,7 @@ struct Reference {
     double dot = 0.0;
     for (int d = 0; d < 3; ++d) {
       xi[d] = s.x[3 * j + d] - s.x[3 * i + d];
-      dot = std::fma(xi[d], (s.y[3 * j + d] - s.y[3 * i + d]) - xi[d], dot);
+      dot = mulAdd(xi[d], (s.y[3 * j + d] - s.y[3 * i + d]) - xi[d], dot);
     }
     return dot;
   }
@@ -113,7 +114,7 @@ struct Reference {
       for (std::int64_t b = s.topology->bondOffsets[i]; b < s.topology->bondOffsets[i + 1]; ++b) {
         if (!s.topology->ownSide(b)) continue;
         const int j = s.topology->neighbors[b];
-        sum = std::fma(omega(b) * mu(b) * xiEta(i, b, xi), s.volume[j], sum);
+        sum = mulAdd(omega(b) * mu(b) * xiEta(i, b, xi), s.volume[j], sum);
       }
       theta[i] = m[i] > 0 ? kappa * sum / m[i] : 0.0;
     }
@@ -128,14 +129,14 @@ struct Reference {
         const int j = s.topology->neighbors[b];
         const double eps = xiEta(i, b, xi) / (s.bondLength[b] * s.bondLength[b]);
         const double F = law.forceScalar(eps);
-        double ti = std::fma(alpha[i], F, mu(b) * (beta[i] * theta[i]));
-        double tj = std::fma(mu(b) * beta[j], theta[j], alpha[j] * F);
+        double ti = mulAdd(alpha[i], F, mu(b) * (beta[i] * theta[i]));
+        double tj = mulAdd(mu(b) * beta[j], theta[j], alpha[j] * F);
         if (s.bondSides) {
           ti *= s.bondSides[b] & 1;
           tj *= (s.bondSides[b] >> 1) & 1;
         }
         const double t = omega(b) * mu(b) * (ti + tj) * s.volume[j];
-        for (int d = 0; d < 3; ++d) fi[d] = std::fma(t, xi[d], fi[d]);
+        for (int d = 0; d < 3; ++d) fi[d] = mulAdd(t, xi[d], fi[d]);
       }
       for (int d = 0; d < 3; ++d) f[3 * i + d] = fi[d];
     }
@@ -148,11 +149,11 @@ struct Reference {
     if (e > law.s0Plus) {
       const double t = e < law.s1Plus ? e : law.s1Plus, w = law.s1Plus - law.s0Plus;
       const double tail = (law.s1Plus - t) * (law.s1Plus - t);
-      return std::fma(0.5 * law.s0Plus, law.s0Plus, law.s0Plus * std::fma(w, w, -tail) / (2.0 * w));
+      return mulAdd(0.5 * law.s0Plus, law.s0Plus, law.s0Plus * mulAdd(w, w, -tail) / (2.0 * w));
     }
     const double t = e > law.s1Minus ? e : law.s1Minus, w = law.s0Minus - law.s1Minus;
-    return std::fma(0.5 * law.s0Minus, law.s0Minus,
-                    law.s0Minus * std::fma(t - law.s1Minus, t - law.s1Minus, -(w * w)) / (2.0 * w));
+    return mulAdd(0.5 * law.s0Minus, law.s0Minus,
+                  law.s0Minus * mulAdd(t - law.s1Minus, t - law.s1Minus, -(w * w)) / (2.0 * w));
   }
   // W = c1 / (2 kappa) theta^2 + alpha sum omega |xi|^2 p(eps) mu V over i's own horizon.
   std::vector<double> energy(const std::vector<double>& theta) const {
@@ -165,9 +166,9 @@ struct Reference {
         const int j = s.topology->neighbors[b];
         const double z2 = s.bondLength[b] * s.bondLength[b];
         const double eps = xiEta(i, b, xi) / z2;
-        bonds = std::fma(omega(b) * z2 * potential(eps) * mu(b), s.volume[j], bonds);
+        bonds = mulAdd(omega(b) * z2 * potential(eps) * mu(b), s.volume[j], bonds);
       }
-      W[i] = std::fma(c1 / (2.0 * kappa) * theta[i], theta[i], alpha[i] * bonds);
+      W[i] = mulAdd(c1 / (2.0 * kappa) * theta[i], theta[i], alpha[i] * bonds);
     }
     return W;
   }
