@@ -18,7 +18,7 @@
 // from the reference positions, the same bits), the influence omega where it is not 1; their
 // damage is which of its row's pairs are intact (rowIntact), with a copy of its value only where
 // some bond is partly damaged. The full (two-sided) lists stay what the rest of the code reads
-// (outputs, checkpoints, tangents): a break is written to both (recordBreak), and the rows are
+// (outputs, checkpoints, tangents): a break is written to both (recordBreaks), and the rows are
 // read again from the full lists whenever something else rewrites them (gatherDamage: a
 // restored trial, a restart).
 #include <cstdint>
@@ -93,7 +93,7 @@ struct HalfBondList {
 
  private:
   std::vector<double> stash_;                 // dropBroken's buffer
-  std::vector<std::int64_t> brokenEntries_;   // noted breaks: the entries of their earlier ends
+  std::vector<std::int64_t> brokenEntries_;   // noted breaks: this rank's entries (fullEntry)
   std::vector<std::uint64_t> brokenMirrors_;  // and (later end, earlier end) where both owned
 };
 
