@@ -88,9 +88,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     if (a < n) theta[a] += sum;
     if constexpr (kBreak) {
       if (anyBroke) {
-        for (int k = 0; k < m; ++k)
-          if (broke[k]) h.noteBreak(t, r, p0 + k);
-        h.dropBroken(r, broke);
+        h.breakPairs(t, r, broke);
       }
     }
   }

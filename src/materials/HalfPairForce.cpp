@@ -91,11 +91,8 @@ void halfLoop(const ModelState& s, const double* c) {
     half::scatterForceRow(a, n, pairPoint + p0, m, volume, buffers, f);
     if constexpr (kBreak) {
       if (anyBroke) {
-        // This rank's entries of the bonds that broke, in the full lists (once per bond), at
-        // the end of the pass.
-        for (int k = 0; k < m; ++k)
-          if (broke[k]) h.noteBreak(t, r, p0 + k);
-        h.dropBroken(r, broke);
+        // Out of the loop from now on; in the full lists at the end of the pass.
+        h.breakPairs(t, r, broke);
       }
     }
   }

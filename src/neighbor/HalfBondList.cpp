@@ -88,14 +88,25 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
   }
 }
 
-void HalfBondList::dropBroken(std::size_t r, const int* broke) {
+void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke) {
   const std::int64_t p0 = rowPairOffsets[r];
   const int m = rowIntact[r];
   int first = 0;
   while (first < m && !broke[first]) ++first;
   if (first == m) return;
+  // Noted before they move: this rank's full-list entry, and both ends where both are owned.
   int intact = first;
-  for (int k = first; k < m; ++k) intact += broke[k] == 0;
+  const int a = rowPoint[r];
+  for (int k = first; k < m; ++k) {
+    if (!broke[k]) {
+      ++intact;
+      continue;
+    }
+    const int b = pairPoint[p0 + k];
+    brokenEntries_.push_back(fullEntry(t, r, p0 + k));
+    if (a < t.numOwned && b < t.numOwned)
+      brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 | static_cast<std::uint32_t>(a));
+  }
   // Each array from the first broken pair on: the intact ones forward, in order, then the
   // broken ones (stashed in a buffer of the row's length).
   if (stash_.size() < static_cast<std::size_t>(m)) stash_.resize(static_cast<std::size_t>(m));

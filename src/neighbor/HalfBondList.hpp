@@ -53,7 +53,7 @@ struct HalfBondList {
   // (1 - d = 0 times finite values), which leave every sum's bits as they are (a sum starts at +0,
   // so to nearest it is never -0, and s + (+-0) = s for every other s), so skipping them changes
   // no result, while a run that breaks a third of its bonds saves a third of its loop. A row is
-  // partitioned again when a pass breaks some of its pairs (dropBroken), and put back in its order
+  // partitioned again when a pass breaks some of its pairs (breakPairs), and put back in its order
   // when the damage is read anew (gatherDamage: a restored trial may mend bonds).
   std::vector<int> rowIntact;
 
@@ -72,27 +72,22 @@ struct HalfBondList {
   // Copies the run's bond damage (float or flags; null: none) into the pairs, every row in its
   // order with its broken pairs last (rowIntact).
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
-  // After a pass broke some of row r's intact pairs (broke[k] != 0 for its k-th pair): moves them
-  // behind the row's intact ones (which keep their order), in every per-pair array.
-  void dropBroken(std::size_t r, const int* broke);
+  // After a pass broke some of row r's intact pairs (broke[k] != 0 for its k-th pair): notes them
+  // for recordBreaks, then moves them behind the row's intact ones (which keep their order), in
+  // every per-pair array.
+  void breakPairs(const Topology& t, std::size_t r, const int* broke);
   // Copies the per-bond influence (full lists) into the pairs.
   void gatherInfluence(const Topology& t, const double* influence);
-  // Notes that pair p of row r broke; recordBreaks marks the noted bonds broken in the full lists
-  // (this rank's entry of each, and the other end's when that is owned too) at the end of a pass.
-  // Together: finding the other end's entry reads a full-list row that the loop does not (a cache
-  // miss per break), and independent searches in one tight loop overlap their misses (sorting
-  // them by row first cost more than it saved).
-  void noteBreak(const Topology& t, std::size_t r, std::int64_t p) {
-    const int a = rowPoint[r], b = pairPoint[p];
-    brokenEntries_.push_back(fullEntry(t, r, p));
-    if (a < t.numOwned && b < t.numOwned)
-      brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 | static_cast<std::uint32_t>(a));
-  }
+  // Marks the bonds that breakPairs noted broken in the full lists (this rank's entry of each,
+  // and the other end's when that is owned too), at the end of a pass. Together: finding the
+  // other end's entry reads a full-list row that the loop does not (a cache miss per break), and
+  // independent searches in one tight loop overlap their misses (sorting them by row first cost
+  // more than it saved).
   template <typename DamageT>
   void recordBreaks(const Topology& t, DamageT* full);
 
  private:
-  std::vector<double> stash_;                 // dropBroken's buffer
+  std::vector<double> stash_;                 // breakPairs's buffer
   std::vector<std::int64_t> brokenEntries_;   // noted breaks: this rank's entries (fullEntry)
   std::vector<std::uint64_t> brokenMirrors_;  // and (later end, earlier end) where both owned
 };
