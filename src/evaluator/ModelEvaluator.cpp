@@ -9,6 +9,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "core/HugePages.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/PartialVolume.hpp"
 
@@ -31,6 +32,15 @@ void ModelEvaluator::initialize() {
   state_.volume = fields_.node("Volume", 1);
   state_.horizon = fields_.node("Horizon", 1);
   state_.forceDensity = fields_.node("Force_Density", 3);
+  // What every bond loop reads or writes at a bond's other end, in large pages
+  // (core/HugePages.hpp).
+  {
+    const auto points = static_cast<std::size_t>(topology_.numOverlap) * sizeof(double);
+    for (const double* v : {state_.x, static_cast<const double*>(state_.y),
+                            static_cast<const double*>(state_.forceDensity)})
+      collapseToHugePages(v, 3 * points);
+    collapseToHugePages(state_.volume, points);
+  }
   // Velocities only where some model reads them (a test scene without them allocates none).
   for (const auto& b : blocks_) velocityGhosts_ = velocityGhosts_ || b.material->needsVelocity();
   if (velocityGhosts_ || fields_.hasNode("Velocity")) state_.velocity = fields_.node("Velocity", 3);
