@@ -15,6 +15,10 @@
 #include "materials/MaterialModel.hpp"
 #include "neighbor/HalfBondList.hpp"
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 namespace peridot::half {
 
 // The vector pass's width in pairs: 8 float damage values fill a 256-bit vector (the padding of
@@ -30,10 +34,23 @@ constexpr double kCoincident = std::numeric_limits<double>::infinity();
 // a b + c: one rounding with FMA hardware, two without; either way the same at every call.
 using peridot::mulAdd;
 
-// A row's buffers: the bond vector Y, the pair's scalar, and which pairs broke in this pass
-// (int: a 1-byte type would make the vectors 32 pairs wide). Sized for the longest row.
+#ifdef __SSE2__
+// The same, lane by lane, for two values at once.
+inline __m128d mulAdd(__m128d a, __m128d b, __m128d c) {
+#ifdef __FMA__
+  return _mm_fmadd_pd(a, b, c);
+#else
+  return _mm_add_pd(_mm_mul_pd(a, b), c);
+#endif
+}
+#endif
+
+// A row's buffers: the bond vector Y (its x and y components interleaved, Y01[2k], Y01[2k + 1],
+// so that the scalar pass reads and writes them as one pair; z in Y2), the pair's scalar, and
+// which pairs broke in this pass (int: a 1-byte type would make the vectors 32 pairs wide).
+// Sized for the longest row.
 struct RowBuffers {
-  double *Y0, *Y1, *Y2, *q;
+  double *Y01, *Y2, *q;
   int* broke;
 };
 
@@ -44,33 +61,54 @@ inline RowBuffers rowBuffers(const HalfBondList& h) {
   if (scratch.size() < 4 * longest) scratch.resize(4 * longest);
   if (brokeNow.size() < longest) brokeNow.resize(longest);
   double* base = scratch.data();
-  return {base, base + longest, base + 2 * longest, base + 3 * longest, brokeNow.data()};
+  return {base, base + 2 * longest, base + 3 * longest, brokeNow.data()};
 }
 
 // The scalar pass of a force row (row point a, its m later ends): the pair force q Y (q and Y
 // from the vector pass) times the other end's volume is added to a and subtracted from each
 // owned later end, in order; a's own sum is added after its row (only owned points, index < n,
-// receive force).
+// receive force). The x and y components go together in one 128-bit register, each rounded as
+// its own multiply-add (mulAdd) would: the same bits, for 9 memory accesses a pair instead of 12
+// (they, not the arithmetic, are what this pass waits on: 4% less force time at 64^3).
 inline void scatterForceRow(int a, int n, const int* later, int m, const double* volume,
                             const RowBuffers& buf, double* f) {
   const double va = volume[a];
-  double f0 = 0, f1 = 0, f2 = 0;
+#ifdef __SSE2__
+  __m128d fa01 = _mm_setzero_pd();
+  double fa2 = 0;
   for (int k = 0; k < m; ++k) {
     const int b = later[k];
     const double sa = buf.q[k] * volume[b], sb = buf.q[k] * va;
-    f0 = mulAdd(sa, buf.Y0[k], f0);
-    f1 = mulAdd(sa, buf.Y1[k], f1);
-    f2 = mulAdd(sa, buf.Y2[k], f2);
+    const __m128d Y01 = _mm_loadu_pd(buf.Y01 + 2 * k);
+    fa01 = mulAdd(_mm_set1_pd(sa), Y01, fa01);
+    fa2 = mulAdd(sa, buf.Y2[k], fa2);
     if (b < n) {
-      f[3 * b] = mulAdd(-sb, buf.Y0[k], f[3 * b]);
-      f[3 * b + 1] = mulAdd(-sb, buf.Y1[k], f[3 * b + 1]);
-      f[3 * b + 2] = mulAdd(-sb, buf.Y2[k], f[3 * b + 2]);
+      double* fb = f + 3 * b;
+      _mm_storeu_pd(fb, mulAdd(_mm_set1_pd(-sb), Y01, _mm_loadu_pd(fb)));
+      fb[2] = mulAdd(-sb, buf.Y2[k], fb[2]);
     }
   }
+  const double fa0 = _mm_cvtsd_f64(fa01), fa1 = _mm_cvtsd_f64(_mm_unpackhi_pd(fa01, fa01));
+#else
+  double fa0 = 0, fa1 = 0, fa2 = 0;
+  for (int k = 0; k < m; ++k) {
+    const int b = later[k];
+    const double sa = buf.q[k] * volume[b], sb = buf.q[k] * va;
+    const double Y0 = buf.Y01[2 * k], Y1 = buf.Y01[2 * k + 1], Y2 = buf.Y2[k];
+    fa0 = mulAdd(sa, Y0, fa0);
+    fa1 = mulAdd(sa, Y1, fa1);
+    fa2 = mulAdd(sa, Y2, fa2);
+    if (b < n) {
+      f[3 * b] = mulAdd(-sb, Y0, f[3 * b]);
+      f[3 * b + 1] = mulAdd(-sb, Y1, f[3 * b + 1]);
+      f[3 * b + 2] = mulAdd(-sb, Y2, f[3 * b + 2]);
+    }
+  }
+#endif
   if (a < n) {
-    f[3 * a] += f0;
-    f[3 * a + 1] += f1;
-    f[3 * a + 2] += f2;
+    f[3 * a] += fa0;
+    f[3 * a + 1] += fa1;
+    f[3 * a + 2] += fa2;
   }
 }
 

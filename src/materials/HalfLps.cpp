@@ -115,7 +115,7 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
   double* f = s.forceDensity;
   std::fill(f, f + 3 * static_cast<std::size_t>(n), 0.0);
   const half::RowBuffers buffers = half::rowBuffers(h);
-  double *bufY0 = buffers.Y0, *bufY1 = buffers.Y1, *bufY2 = buffers.Y2, *bufQ = buffers.q;
+  double *bufY01 = buffers.Y01, *bufY2 = buffers.Y2, *bufQ = buffers.q;
   const std::size_t rows = h.rowPoint.size();
 
   for (std::size_t r = 0; r < rows; ++r) {
@@ -141,8 +141,8 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
           intact * omega *
           ((thetaBetaA + thetaBeta[b]) * zb + intact * (alphaA + alpha[b]) * (dY - zb));
       const double safe = dY > 0 ? dY : half::kCoincident;  // none for coincident ends
-      bufY0[k] = Y0;
-      bufY1[k] = Y1;
+      bufY01[2 * k] = Y0;
+      bufY01[2 * k + 1] = Y1;
       bufY2[k] = Y2;
       bufQ[k] = tension / safe;
     }

@@ -38,7 +38,7 @@ void halfLoop(const ModelState& s, const double* c) {
 
   // A row's pairs in two passes (materials/HalfLoop.hpp).
   const half::RowBuffers buffers = half::rowBuffers(h);
-  double *bufY0 = buffers.Y0, *bufY1 = buffers.Y1, *bufY2 = buffers.Y2, *bufQ = buffers.q;
+  double *bufY01 = buffers.Y01, *bufY2 = buffers.Y2, *bufQ = buffers.q;
   int* broke = buffers.broke;
   const std::size_t rows = h.rowPoint.size();
 
@@ -83,8 +83,8 @@ void halfLoop(const ModelState& s, const double* c) {
       // volume); none for coincident ends, which divide by infinity (half::kCoincident).
       const double safe = dY > 0 ? dY : half::kCoincident;
       const double denominator = kOverLength ? 2.0 * zb * zb * safe : 2.0 * zb * safe;
-      bufY0[k] = Y0;
-      bufY1[k] = Y1;
+      bufY01[2 * k] = Y0;
+      bufY01[2 * k + 1] = Y1;
       bufY2[k] = Y2;
       bufQ[k] = c2 * (dY - zb) / denominator;
     }
