@@ -21,6 +21,7 @@
 // (outputs, checkpoints, tangents): a break is written to both (recordBreaks), and the rows are
 // read again from the full lists whenever something else rewrites them (gatherDamage: a
 // restored trial, a restart).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -80,9 +81,9 @@ struct HalfBondList {
   void gatherInfluence(const Topology& t, const double* influence);
   // Marks the bonds that breakPairs noted broken in the full lists (this rank's entry of each,
   // and the other end's when that is owned too), at the end of a pass. Together: finding the
-  // other end's entry reads a full-list row that the loop does not (a cache miss per break), and
-  // independent searches in one tight loop overlap their misses (sorting them by row first cost
-  // more than it saved).
+  // other end's entry reads a full-list row that the loop does not (cache misses per break),
+  // and in one tight loop those rows can be fetched ahead of their searches (sorting the
+  // searches by row first cost more than it saved).
   template <typename DamageT>
   void recordBreaks(const Topology& t, DamageT* full);
 
@@ -105,7 +106,22 @@ std::int64_t mirrorBond(const Topology& topology, int j, int i);
 template <typename DamageT>
 void HalfBondList::recordBreaks(const Topology& t, DamageT* full) {
   for (const std::int64_t e : brokenEntries_) full[e] = DamageT(1);
-  for (const std::uint64_t key : brokenMirrors_) {
+  // The other end's row and damage entries, asked for this many searches ahead: the searches
+  // then find them in cache (4% less force time at 64^3, where a third of the bonds break). The
+  // first 128 entries (a row at delta = 3 dx has ~120), without reading where the row ends.
+  constexpr std::size_t kAhead = 64;
+  constexpr std::int64_t kEntries = 128, kLine = 64;
+  const std::size_t count = brokenMirrors_.size();
+  const auto last = static_cast<std::int64_t>(t.neighbors.size()) - 1;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + kAhead < count) {
+      const std::int64_t b0 = t.bondOffsets[brokenMirrors_[k + kAhead] >> 32];
+      for (std::int64_t b = 0; b < kEntries; b += kLine / std::int64_t{sizeof(int)})
+        __builtin_prefetch(&t.neighbors[std::min(b0 + b, last)]);
+      for (std::int64_t b = 0; b < kEntries; b += kLine / std::int64_t{sizeof(DamageT)})
+        __builtin_prefetch(full + std::min(b0 + b, last), 1);
+    }
+    const std::uint64_t key = brokenMirrors_[k];
     const std::int64_t mirror =
         mirrorBond(t, static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu));
     if (mirror >= 0) full[mirror] = DamageT(1);
