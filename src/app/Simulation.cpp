@@ -416,6 +416,7 @@ void Simulation::prepareSolver() {
   // The motion of prescribed components is the user's, not the integration's: not checked.
   std::vector<double> prescribed(3 * static_cast<std::size_t>(topology_.numOwned), 0.0);
   conditions_->markPrescribed(prescribed.data());
+  freeComponents_ = countFreeComponents(prescribed);
   divergence_ = std::make_unique<DivergenceMonitor>(
       topology_.numOwned, fields_->node("Horizon", 1),
       [this](int i) {

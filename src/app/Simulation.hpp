@@ -146,6 +146,12 @@ class Simulation {
   double peridigmDt_ = 0;          // Peridigm's estimate (stableDt_ unless "Verlet Limit")
   int verletLimitIterations_ = 0;  // Lanczos iterations of the "Verlet Limit" estimate
   long long numSteps_ = 0;
+  // Displacement components the Verlet integration moves, over all ranks (not prescribed): with
+  // none, no step can diverge.
+  long long freeComponents_ = -1;
+  // Over all ranks, the components of `prescribed` (3 per owned point, 1 = prescribed) that are
+  // not (x and y only in a planar run).
+  long long countFreeComponents(const std::vector<double>& prescribed) const;
   std::function<void(long long, double)> observer_;
   std::unique_ptr<Checkpoint> checkpoint_;  // with Restart
   std::unique_ptr<RunControl> control_;

@@ -4,6 +4,7 @@
 #                           the ratio, and the records written before read back (serial)
 #   divergence_v2_2.1x_np2  the same on 2 ranks (the message is shared by every rank)
 #   divergence_v2_1.5x      stable: finishes with "Done." and no divergence reported
+#   divergence_v2_prescribed_2.1x  every component's motion prescribed: no warning, a note
 find_program(PERIDOT_NCDUMP_EXECUTABLE ncdump)
 set(PERIDOT_DIVERGENCE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 function(peridot_divergence_test name ratio expect np)
@@ -29,6 +30,7 @@ endfunction()
 
 peridot_divergence_test(v2_2.1x 2.1 diverge 1)
 peridot_divergence_test(v2_1.5x 1.5 finish 1)
+peridot_divergence_test(v2_prescribed_2.1x 2.1 prescribed 1)
 if(MPIEXEC_EXECUTABLE)
   peridot_divergence_test(v2_2.1x_np2 2.1 diverge 2)
 endif()
