@@ -384,55 +384,6 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
 #endif
 }
 
-void Simulation::prepareSolver() {
-  {
-    Timers::Scope t(timers_, "Setup: time step estimate");
-    estimateStableTimeStep();
-  }
-  const auto& s = config_.solver;
-  if (!s.fixedDtGiven && !(stableDt_ < std::numeric_limits<double>::max())) {
-    // The estimate sums bond stiffnesses; contact springs depend on where bodies meet and are
-    // not in it (nor in Peridigm's), so a run without bonds has no estimate.
-    throw InputError(s.path + " -> Verlet -> Fixed dt",
-                     "required: no point has a bond (the horizon is smaller than the spacing, all "
-                     "interaction is through contact), so there is no stable time step estimate");
-  }
-  dt_ = s.fixedDtGiven ? s.fixedDt : s.safetyFactor * stableDt_;
-  const double ratio = (s.finalTime - s.initialTime) / dt_;
-  if (!(ratio < 1e15)) {  // also NaN; a long long would not hold the count
-    throw InputError(s.path + " -> Final Time",
-                     "the run would take " + formatNumber(ratio) + " steps of dt = " +
-                         formatNumber(dt_) + " (the stable time step estimate is " +
-                         formatNumber(stableDt_) + "); check the moduli, density and Fixed dt");
-  }
-  numSteps_ = static_cast<long long>(std::floor(ratio));  // as Peridigm counts them
-  if (!s.explicitVerlet()) checkImplicit();
-  // (A switch from QuasiStatic close to the final time may leave less than one step: none.)
-  if (numSteps_ < 1 && !s.loadStepped() && !switching_) {
-    throw InputError(s.path + " -> Final Time",
-                     "the run is shorter than one time step (dt = " + formatNumber(dt_) + ")");
-  }
-  origin_ = s.initialTime;
-  // The motion of prescribed components is the user's, not the integration's: not checked.
-  std::vector<double> prescribed(3 * static_cast<std::size_t>(topology_.numOwned), 0.0);
-  conditions_->markPrescribed(prescribed.data());
-  freeComponents_ = countFreeComponents(prescribed);
-  divergence_ = std::make_unique<DivergenceMonitor>(
-      topology_.numOwned, fields_->node("Horizon", 1),
-      [this](int i) {
-        return "point " + std::to_string(topology_.overlapGlobalId[i] + 1) + " (block " +
-               blocks_[blockIndexOfPoint_[i]].name + ")";
-      },
-      dt_, stableDt_, comm_, prescribed.data());
-  VerletArrays arrays;
-  arrays.numOwned = topology_.numOwned;
-  arrays.x = x_, arrays.u = u_, arrays.v = v_, arrays.y = y_, arrays.a = a_;
-  arrays.force = f_, arrays.contactForce = fc_, arrays.bodyForce = b_;
-  arrays.density = density_.data();
-  arrays.planar = planar_;
-  verlet_ = std::make_unique<VerletStep>(arrays, dt_, prescribed.data());
-}
-
 void Simulation::openOutputs() {
   outputs_ = std::make_unique<OutputManager>(config_, blockNames_, planar_ ? 2 : 3, nodeSetIds_,
                                              topology_, *variables_, timers_);

@@ -191,16 +191,6 @@ void Simulation::reportMemory(std::ostream& out) {
   out << text;
 }
 
-long long Simulation::countFreeComponents(const std::vector<double>& prescribed) const {
-  const int dims = planar_ ? 2 : 3;
-  long long free = 0;
-  for (int i = 0; i < topology_.numOwned; ++i)
-    for (int d = 0; d < dims; ++d) free += prescribed[3 * i + d] == 0.0 ? 1 : 0;
-  long long total = 0;
-  MPI_Allreduce(&free, &total, 1, MPI_LONG_LONG, MPI_SUM, comm_);
-  return total;
-}
-
 void Simulation::reportSetup() {
   const auto& s = config_.solver;
   if (!outputs_) openOutputs();
