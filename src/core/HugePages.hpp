@@ -11,7 +11,7 @@ namespace peridot {
 // page now (Linux 6.1's MADV_COLLAPSE, whatever the system's transparent-huge-page setting).
 // The contents do not change. Where the kernel cannot (an older kernel, another system, a block
 // that is not all one anonymous mapping, no large page free) the pages stay as they are.
-// Returns the bytes now in large pages, for the log.
+// Returns the bytes it was granted (0 where nothing was asked or granted).
 std::size_t collapseToHugePages(const void* data, std::size_t bytes);
 
 }  // namespace peridot
