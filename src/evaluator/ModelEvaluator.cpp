@@ -205,13 +205,10 @@ void ModelEvaluator::initialize() {
   if (halfBondsBuilt_) {
     if (storeBondLengths_) halfBonds_.storeLengths(state_.x);
     if (state_.influence) halfBonds_.gatherInfluence(topology_, state_.influence);
-    // The rows as built hold every pair intact, in order: only a damage model that writes
-    // damage before the first step needs them read again (a pass over every pair: 2% of a
-    // 128^3 set-up).
-    bool initialDamage = false;
-    for (const auto& b : blocks_)
-      initialDamage = initialDamage || (b.damage && b.damage->initializesDamage());
-    if (initialDamage) bondDamageRewritten();
+    // The rows as built hold every pair intact, in order, and nothing has written damage yet:
+    // the half list is not built where a damage model writes damage before the first step
+    // (halfBondListApplies), so there is nothing to read again (bondDamageRewritten: a pass
+    // over every pair, 2% of a 128^3 set-up).
   }
 }
 
