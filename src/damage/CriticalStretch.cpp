@@ -32,7 +32,7 @@ void breakLoop(const ModelState& s, const std::vector<int>& points, double sc, d
         zeta = std::sqrt(sumOfSquares(X0, X1, X2));
       }
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      double length = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      double length = std::sqrt(sumOfSquares(Y0, Y1, Y2));
       if (kThermal) length -= thermal * zeta;
       const double stretch = (length - zeta) / zeta;
       // max() keeps a broken bond broken without a branch the compiler cannot vectorize.

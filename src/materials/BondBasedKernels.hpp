@@ -71,7 +71,7 @@ void pairForceLoop(const ModelState& s, const std::vector<int>& points, const do
         zb = std::sqrt(sumOfSquares(X0, X1, X2));
       }
       const double Y0 = y[3 * j] - yi0, Y1 = y[3 * j + 1] - yi1, Y2 = y[3 * j + 2] - yi2;
-      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
       double c2 = kSides ? ci * (sides[b] & 1) + c[j] * ((sides[b] >> 1) & 1) : ci + c[j];
       // The ends' thermal part c_i eps_i + c_j eps_j, scaled as c2 is below.
       double th = 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "materials/BondOptions.hpp"
 #include "materials/HalfLps.hpp"
@@ -130,16 +131,23 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
   const int* neighbors = s.topology->neighbors.data();
   const double criticalStretch = s.fusedCriticalStretch;
   float* breakable = s.breakableBondDamage;
+  // A row's terms, then their sum in order: the vectorizer may split a reduction into partial
+  // sums in different ways for the fused and the unfused loop (AVX-512 builds do), and the two
+  // must give the same bits.
+  thread_local std::vector<double> terms;
   for (int i : points) {
-    double theta = 0;
     const double m = weightedVolume_[i];
     const double yi0 = s.y[3 * i], yi1 = s.y[3 * i + 1], yi2 = s.y[3 * i + 2];
     const double strainI = kThermal ? s.thermalStrain[i] : 0.0;
-#pragma omp simd reduction(+ : theta)
-    for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
+    const std::int64_t b0 = offsets[i];
+    if (terms.size() < static_cast<std::size_t>(offsets[i + 1] - b0))
+      terms.resize(static_cast<std::size_t>(offsets[i + 1] - b0));
+    double* term = terms.data();
+#pragma omp simd
+    for (std::int64_t b = b0; b < offsets[i + 1]; ++b) {
       const int j = neighbors[b];
       const double Y0 = s.y[3 * j] - yi0, Y1 = s.y[3 * j + 1] - yi1, Y2 = s.y[3 * j + 2] - yi2;
-      const double dY = std::sqrt(Y0 * Y0 + Y1 * Y1 + Y2 * Y2);
+      const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
       const double zeta = s.bondLength[b];
       const double omega = kInfluence ? s.influence[b] : 1.0;
       double intact = 1.0;
@@ -154,8 +162,10 @@ void Elastic::dilatationLoop(const ModelState& s, const std::vector<int>& points
       const double own = kSides ? (s.bondSides[b] & 1) : 1.0;  // adds +0 where not own
       double e = dY - zeta;
       if (kThermal) e -= strainI * zeta;
-      theta += own * (thetaFactor_ * omega * intact * zeta * e * s.volume[j] / m);
+      term[b - b0] = own * (thetaFactor_ * omega * intact * zeta * e * s.volume[j] / m);
     }
+    double theta = 0;
+    for (std::int64_t b = b0; b < offsets[i + 1]; ++b) theta += term[b - b0];
     // A point without bonds has no weighted volume and no dilatation.
     dilatation_[i] = m > 0 ? theta : 0.0;
   }
