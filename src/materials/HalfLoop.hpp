@@ -7,6 +7,7 @@
 // row's point and subtracts from the later ends, in order (neighbor/HalfBondList.hpp).
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -50,7 +51,7 @@ inline __m128d mulAdd(__m128d a, __m128d b, __m128d c) {
 // which pairs broke in this pass (int: a 1-byte type would make the vectors 32 pairs wide).
 // Sized for the longest row.
 struct RowBuffers {
-  double *Y01, *Y2, *q;
+  double *Y01, *Y2, *q, *zeta;
   int* broke;
 };
 
@@ -58,10 +59,10 @@ inline RowBuffers rowBuffers(const HalfBondList& h) {
   thread_local std::vector<double> scratch;
   thread_local std::vector<int> brokeNow;
   const auto longest = static_cast<std::size_t>((h.longestRow + kLanes - 1) / kLanes * kLanes);
-  if (scratch.size() < 4 * longest) scratch.resize(4 * longest);
+  if (scratch.size() < 5 * longest) scratch.resize(5 * longest);
   if (brokeNow.size() < longest) brokeNow.resize(longest);
   double* base = scratch.data();
-  return {base, base + 2 * longest, base + 3 * longest, brokeNow.data()};
+  return {base, base + 2 * longest, base + 3 * longest, base + 4 * longest, brokeNow.data()};
 }
 
 // The scalar pass of a force row (row point a, its m later ends): the pair force q Y (q and Y
@@ -122,21 +123,66 @@ DamageT* breakableDamage(const ModelState& s) {
     return s.breakableBondBroken;
 }
 
-// Calls loop(std::bool_constant<kStoredLength>, DamageT) for the run's storage: |xi| kept in the
-// pairs or not, and the run's damage form (float, or unsigned char flags).
+// Where a loop reads a pair's |xi| (HalfBondList::storeLengths): computed from the reference
+// positions, per pair, or through the table of the rank's distinct lengths. The same bits.
+enum LengthSource : int { kComputedLength, kPairLength, kTabledLength };
+
+struct PairLengths {
+  const double* perPair;
+  const std::uint16_t* index;
+  const double* table;
+};
+
+inline PairLengths pairLengths(const HalfBondList& h) {
+  return {h.pairLength.data(), h.pairLengthIndex.data(), h.lengthTable.data()};
+}
+
+// The |xi| of a row's pairs p0 .. p0 + lanes as one contiguous array (index k for pair p0 + k),
+// or null where the loop computes them: the table's values are looked up here, in a scalar pass
+// into `buffer`, before the vector pass (whose gathers would be emulated, element by element,
+// on CPUs without fast ones: slower than these plain loads).
+template <int kSource>
+inline const double* rowLengths(const PairLengths& l, std::int64_t p0, int lanes, double* buffer) {
+  if constexpr (kSource == kPairLength) {
+    return l.perPair + p0;
+  } else if constexpr (kSource == kTabledLength) {
+    const std::uint16_t* index = l.index + p0;
+#pragma GCC unroll 4
+    for (int k = 0; k < lanes; ++k) buffer[k] = l.table[index[k]];
+    return buffer;
+  } else {
+    return nullptr;
+  }
+}
+
+// |xi| of the row's k-th pair, whose later end is b (xa: the row point's reference position).
+template <int kSource>
+inline double pairZeta(const double* rowLength, int k, int b, const double* x, const double* xa) {
+  if constexpr (kSource == kComputedLength)
+    return std::sqrt(sumOfSquares(x[3 * b] - xa[0], x[3 * b + 1] - xa[1], x[3 * b + 2] - xa[2]));
+  else
+    return rowLength[k];
+}
+
+// Calls loop(std::integral_constant<int, LengthSource>, DamageT) for the run's storage: where
+// |xi| is read, and the run's damage form (float, or unsigned char flags).
 template <typename Loop>
 void withStorage(const ModelState& s, Loop&& loop) {
   const bool flags = s.bondBroken != nullptr;
-  const bool stored = !s.halfBonds->pairLength.empty();
+  const HalfBondList& h = *s.halfBonds;
   using Flag = unsigned char;
-  if (stored && flags)
-    loop(std::true_type{}, Flag{});
-  else if (stored)
-    loop(std::true_type{}, float{});
-  else if (flags)
-    loop(std::false_type{}, Flag{});
+  const auto withDamageForm = [&](auto source) {
+    if (flags)
+      loop(source, Flag{});
+    else
+      loop(source, float{});
+  };
+  if (!h.pairLengthIndex.empty())
+    withDamageForm(std::integral_constant<int, kTabledLength>{});
+  else if (!h.pairLength.empty())
+    withDamageForm(std::integral_constant<int, kPairLength>{});
   else
-    loop(std::false_type{}, float{});
+    withDamageForm(std::integral_constant<int, kComputedLength>{});
 }
 
 }  // namespace peridot::half

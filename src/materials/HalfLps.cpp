@@ -13,17 +13,7 @@ namespace {
 
 using half::mulAdd;
 
-// |xi| of pair p (row point a): stored, or from the reference positions (the same bits).
-template <bool kStoredLength>
-inline double pairZeta(const double* pairLength, const double* x, std::int64_t p, int b,
-                       const double* xa) {
-  if constexpr (kStoredLength)
-    return pairLength[p];
-  else
-    return std::sqrt(sumOfSquares(x[3 * b] - xa[0], x[3 * b + 1] - xa[1], x[3 * b + 2] - xa[2]));
-}
-
-template <bool kInfluence, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT>
+template <bool kInfluence, bool kDamage, bool kBreak, int kLength, typename DamageT>
 void dilatationLoop(const ModelState& s, const double* weightedVolume, double thetaFactor,
                     double* theta) {
   constexpr int kLanes = half::kLanes;
@@ -34,7 +24,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
   const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
-  const double* pairLength = h.pairLength.data();
+  const half::PairLengths lengths = half::pairLengths(h);
   const double* pairInfluence = h.pairInfluence.data();
   float* pairDamage = h.pairDamage.data();
   DamageT* full = half::breakableDamage<DamageT>(s);
@@ -55,6 +45,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     const std::int64_t p0 = rowPairs[r];
     const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;  // past the end: read, not used
+    const double* rowLength = half::rowLengths<kLength>(lengths, p0, lanes, buffers.zeta);
     int anyBroke = 0;
 #pragma omp simd reduction(| : anyBroke)
     for (int k = 0; k < lanes; ++k) {
@@ -62,7 +53,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
       const int b = pairPoint[p];
       const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
       const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
-      const double zb = pairZeta<kStoredLength>(pairLength, x, p, b, xa);
+      const double zb = half::pairZeta<kLength>(rowLength, k, b, x, xa);
       // 1 - d; without a damage copy the row's first m pairs are intact until this pass breaks
       // one (HalfBondList::pairDamage).
       double intact = 1.0;
@@ -98,7 +89,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     theta[i] = weightedVolume[i] > 0 ? thetaFactor * theta[i] / weightedVolume[i] : 0.0;
 }
 
-template <bool kInfluence, bool kDamage, bool kStoredLength>
+template <bool kInfluence, bool kDamage, int kLength>
 void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha) {
   constexpr int kLanes = half::kLanes;
   const Topology& t = *s.topology;
@@ -108,7 +99,7 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
   const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
-  const double* pairLength = h.pairLength.data();
+  const half::PairLengths lengths = half::pairLengths(h);
   const double* pairInfluence = h.pairInfluence.data();
   const float* pairDamage = h.pairDamage.data();
   const double *y = s.y, *x = s.x, *volume = s.volume;
@@ -126,13 +117,14 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
     const std::int64_t p0 = rowPairs[r];
     const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;
+    const double* rowLength = half::rowLengths<kLength>(lengths, p0, lanes, buffers.zeta);
 #pragma omp simd
     for (int k = 0; k < lanes; ++k) {
       const std::int64_t p = p0 + k;
       const int b = pairPoint[p];
       const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
       const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
-      const double zb = pairZeta<kStoredLength>(pairLength, x, p, b, xa);
+      const double zb = half::pairZeta<kLength>(rowLength, k, b, x, xa);
       const double intact = kDamage ? 1.0 - pairDamage[p] : 1.0;
       const double omega = kInfluence ? pairInfluence[p] : 1.0;
       // t_a + t_b = (1 - d) omega ((theta beta_a + theta beta_b) |xi| + (1 - d) (alpha_a +
@@ -155,8 +147,8 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
 void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double thetaFactor,
                        double* dilatation) {
   const bool influence = !s.halfBonds->pairInfluence.empty();
-  half::withStorage(s, [&](auto stored, auto damageType) {
-    constexpr bool kStored = decltype(stored)::value;
+  half::withStorage(s, [&](auto source, auto damageType) {
+    constexpr int kLength = decltype(source)::value;
     using DamageT = decltype(damageType);
     const bool breaks = half::breakableDamage<DamageT>(s) != nullptr;
     // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage).
@@ -164,16 +156,16 @@ void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double
     const auto run = [&](auto withInfluence) {
       constexpr bool kInfluence = decltype(withInfluence)::value;
       if (breaks && partial)
-        dilatationLoop<kInfluence, true, true, kStored, DamageT>(s, weightedVolume, thetaFactor,
+        dilatationLoop<kInfluence, true, true, kLength, DamageT>(s, weightedVolume, thetaFactor,
                                                                  dilatation);
       else if (breaks)
-        dilatationLoop<kInfluence, false, true, kStored, DamageT>(s, weightedVolume, thetaFactor,
+        dilatationLoop<kInfluence, false, true, kLength, DamageT>(s, weightedVolume, thetaFactor,
                                                                   dilatation);
       else if (partial)
-        dilatationLoop<kInfluence, true, false, kStored, float>(s, weightedVolume, thetaFactor,
+        dilatationLoop<kInfluence, true, false, kLength, float>(s, weightedVolume, thetaFactor,
                                                                 dilatation);
       else
-        dilatationLoop<kInfluence, false, false, kStored, float>(s, weightedVolume, thetaFactor,
+        dilatationLoop<kInfluence, false, false, kLength, float>(s, weightedVolume, thetaFactor,
                                                                  dilatation);
     };
     if (influence)
@@ -186,14 +178,16 @@ void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double
 void halfLpsForce(const ModelState& s, const double* thetaBeta, const double* alpha) {
   const bool influence = !s.halfBonds->pairInfluence.empty();
   const bool damaged = !s.halfBonds->pairDamage.empty();  // some bond partly damaged
-  const bool stored = !s.halfBonds->pairLength.empty();
+  const HalfBondList& h = *s.halfBonds;
   const auto run = [&](auto withInfluence, auto withDamage) {
     constexpr bool kInfluence = decltype(withInfluence)::value;
     constexpr bool kDamage = decltype(withDamage)::value;
-    if (stored)
-      forceLoop<kInfluence, kDamage, true>(s, thetaBeta, alpha);
+    if (!h.pairLengthIndex.empty())
+      forceLoop<kInfluence, kDamage, half::kTabledLength>(s, thetaBeta, alpha);
+    else if (!h.pairLength.empty())
+      forceLoop<kInfluence, kDamage, half::kPairLength>(s, thetaBeta, alpha);
     else
-      forceLoop<kInfluence, kDamage, false>(s, thetaBeta, alpha);
+      forceLoop<kInfluence, kDamage, half::kComputedLength>(s, thetaBeta, alpha);
   };
   if (influence && damaged)
     run(std::true_type{}, std::true_type{});

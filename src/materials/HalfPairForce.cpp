@@ -13,8 +13,7 @@ namespace {
 
 using half::mulAdd;
 
-template <bool kOverLength, bool kDamage, bool kBreak, bool kStoredLength, typename DamageT,
-          bool kUniform>
+template <bool kOverLength, bool kDamage, bool kBreak, int kLength, typename DamageT, bool kUniform>
 void halfLoop(const ModelState& s, const double* c) {
   constexpr int kLanes = half::kLanes;
   const Topology& t = *s.topology;
@@ -24,7 +23,7 @@ void halfLoop(const ModelState& s, const double* c) {
   const std::int64_t* rowPairs = h.rowPairOffsets.data();
   const int* rowIntact = h.rowIntact.data();
   const int* pairPoint = h.pairPoint.data();
-  const double* pairLength = h.pairLength.data();
+  const half::PairLengths lengths = half::pairLengths(h);
   // The pairs' copy of the damage, if any, is a float whatever the run keeps (a 1-byte type here
   // would make the vector pass 32 pairs wide).
   float* pairDamage = h.pairDamage.data();
@@ -45,13 +44,14 @@ void halfLoop(const ModelState& s, const double* c) {
   for (std::size_t r = 0; r < rows; ++r) {
     const int a = rowPoint[r];
     const double ya0 = y[3 * a], ya1 = y[3 * a + 1], ya2 = y[3 * a + 2];
-    const double xa0 = x[3 * a], xa1 = x[3 * a + 1], xa2 = x[3 * a + 2];
+    const double* xa = x + 3 * a;
     const double ca = c[a];
     const std::int64_t p0 = rowPairs[r];
     const int m = rowIntact[r];  // its broken pairs, after these, add exact zeros: skipped
     // In whole vectors: the lanes past the row's end compute what nobody reads and leave the
     // damage they read unchanged.
     const int lanes = (m + kLanes - 1) / kLanes * kLanes;
+    const double* rowLength = half::rowLengths<kLength>(lengths, p0, lanes, buffers.zeta);
     int anyBroke = 0;
 #pragma omp simd reduction(| : anyBroke)
     for (int k = 0; k < lanes; ++k) {
@@ -59,11 +59,7 @@ void halfLoop(const ModelState& s, const double* c) {
       const int b = pairPoint[p];
       const double Y0 = y[3 * b] - ya0, Y1 = y[3 * b + 1] - ya1, Y2 = y[3 * b + 2] - ya2;
       const double dY = std::sqrt(sumOfSquares(Y0, Y1, Y2));
-      double zb;
-      if constexpr (kStoredLength)
-        zb = pairLength[p];
-      else
-        zb = std::sqrt(sumOfSquares(x[3 * b] - xa0, x[3 * b + 1] - xa1, x[3 * b + 2] - xa2));
+      const double zb = half::pairZeta<kLength>(rowLength, k, b, x, xa);
       // One micromodulus everywhere (one material and horizon): ca + ca, the same bits as
       // ca + c[b], without gathering c[b].
       double c2 = kUniform ? ca + ca : ca + c[b];
@@ -99,7 +95,7 @@ void halfLoop(const ModelState& s, const double* c) {
   if constexpr (kBreak) h.recordBreaks(t, full);
 }
 
-template <bool kOverLength, bool kStoredLength, typename DamageT, bool kUniform>
+template <bool kOverLength, int kLength, typename DamageT, bool kUniform>
 void withDamage(const ModelState& s, const double* c) {
   constexpr bool kFloat = std::is_same_v<DamageT, float>;
   const bool breaks = kFloat ? s.breakableBondDamage != nullptr : s.breakableBondBroken != nullptr;
@@ -107,13 +103,13 @@ void withDamage(const ModelState& s, const double* c) {
   // loop that breaks none writes no damage (any DamageT will do).
   const bool partial = !s.halfBonds->pairDamage.empty();
   if (breaks && partial)
-    halfLoop<kOverLength, true, true, kStoredLength, DamageT, kUniform>(s, c);
+    halfLoop<kOverLength, true, true, kLength, DamageT, kUniform>(s, c);
   else if (breaks)
-    halfLoop<kOverLength, false, true, kStoredLength, DamageT, kUniform>(s, c);
+    halfLoop<kOverLength, false, true, kLength, DamageT, kUniform>(s, c);
   else if (partial)
-    halfLoop<kOverLength, true, false, kStoredLength, float, kUniform>(s, c);
+    halfLoop<kOverLength, true, false, kLength, float, kUniform>(s, c);
   else
-    halfLoop<kOverLength, false, false, kStoredLength, float, kUniform>(s, c);
+    halfLoop<kOverLength, false, false, kLength, float, kUniform>(s, c);
 }
 
 // Whether every point the loop reads (owned and ghosts) has the same micromodulus: a pass over
@@ -128,18 +124,18 @@ bool uniform(const Topology& t, const double* c) {
 }  // namespace
 
 void halfPairForce(const ModelState& s, const double* c, bool normalized) {
-  half::withStorage(s, [&](auto stored, auto damageType) {
-    constexpr bool kStored = decltype(stored)::value;
+  half::withStorage(s, [&](auto source, auto damageType) {
+    constexpr int kLength = decltype(source)::value;
     using DamageT = decltype(damageType);
     const bool same = uniform(*s.topology, c);
     if (normalized && same)
-      withDamage<true, kStored, DamageT, true>(s, c);
+      withDamage<true, kLength, DamageT, true>(s, c);
     else if (normalized)
-      withDamage<true, kStored, DamageT, false>(s, c);
+      withDamage<true, kLength, DamageT, false>(s, c);
     else if (same)
-      withDamage<false, kStored, DamageT, true>(s, c);
+      withDamage<false, kLength, DamageT, true>(s, c);
     else
-      withDamage<false, kStored, DamageT, false>(s, c);
+      withDamage<false, kLength, DamageT, false>(s, c);
   });
 }
 

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cstring>
 #include <type_traits>
 
 #include "neighbor/BondGeometry.hpp"
@@ -26,6 +27,7 @@ void permuteRow(HalfBondList& h, std::int64_t p0, const std::vector<int>& order)
   permute(h.pairPoint, p0, order);
   permute(h.pairSlot, p0, order);
   permute(h.pairLength, p0, order);
+  permute(h.pairLengthIndex, p0, order);
   permute(h.pairDamage, p0, order);
   permute(h.pairInfluence, p0, order);
 }
@@ -36,6 +38,7 @@ std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowIntact.size() * sizeof(int) +
          rowPairOffsets.size() * sizeof(std::int64_t) + pairPoint.size() * sizeof(int) +
          pairSlot.size() * sizeof(std::uint16_t) + pairLength.size() * sizeof(double) +
+         pairLengthIndex.size() * sizeof(std::uint16_t) + lengthTable.size() * sizeof(double) +
          pairDamage.size() * sizeof(float) + pairInfluence.size() * sizeof(double);
 }
 
@@ -128,6 +131,7 @@ void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke
   compact(pairPoint);
   compact(pairSlot);
   compact(pairLength);
+  compact(pairLengthIndex);
   compact(pairDamage);
   compact(pairInfluence);
   rowIntact[r] = intact;
@@ -140,8 +144,52 @@ void HalfBondList::gatherInfluence(const Topology& t, const double* influence) {
       pairInfluence[p] = influence[fullEntry(t, r, p)];
 }
 
-void HalfBondList::storeLengths(const double* x) {
-  pairLength.assign(static_cast<std::size_t>(numPairs() + kPadding), 1.0);
+void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
+  const auto entries = static_cast<std::size_t>(numPairs() + kPadding);
+  pairLength = std::vector<double>();
+  // The table first; entry 0 is the padding's 1. The values are found by an open-addressed
+  // hash of their bits, at least twice the limit in size (a lookup per pair: it must cost little
+  // beside the square root).
+  lengthTable.assign(1, 1.0);
+  pairLengthIndex.assign(entries, 0);
+  int log2Slots = 1;
+  while ((std::size_t{1} << log2Slots) < 2 * tableLimit) ++log2Slots;
+  const std::size_t mask = (std::size_t{1} << log2Slots) - 1;
+  std::vector<std::int32_t> slot(mask + 1, -1);
+  const auto bits = [](double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  const auto home = [&](std::uint64_t b) {
+    return static_cast<std::size_t>((b * 0x9E3779B97F4A7C15ull) >> (64 - log2Slots));
+  };
+  slot[home(bits(1.0))] = 0;
+  // The table index of v, or -1 when the table is full.
+  const auto indexOf = [&](double v) -> std::int64_t {
+    const std::uint64_t b = bits(v);
+    for (std::size_t h = home(b);; h = (h + 1) & mask) {
+      if (slot[h] < 0) {
+        if (lengthTable.size() >= tableLimit) return -1;
+        slot[h] = static_cast<std::int32_t>(lengthTable.size());
+        lengthTable.push_back(v);
+        return slot[h];
+      }
+      if (bits(lengthTable[static_cast<std::size_t>(slot[h])]) == b) return slot[h];
+    }
+  };
+  bool fits = true;
+  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1] && fits; ++p) {
+      const std::int64_t k = indexOf(referenceBondLength(x, rowPoint[r], pairPoint[p]));
+      fits = k >= 0;
+      pairLengthIndex[p] = static_cast<std::uint16_t>(k);
+    }
+  if (fits) return;
+  // Too many distinct lengths (an irregular mesh): one double per pair.
+  pairLengthIndex = std::vector<std::uint16_t>();
+  lengthTable = std::vector<double>();
+  pairLength.assign(entries, 1.0);
   for (std::size_t r = 0; r < rowPoint.size(); ++r)
     for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
       pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);

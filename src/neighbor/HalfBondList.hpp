@@ -30,9 +30,10 @@
 namespace peridot {
 
 struct HalfBondList {
-  // The per-pair arrays a vector loop reads (pairPoint, pairLength, pairDamage) have
-  // kPadding entries more than there are pairs, so that a row's loop may run in whole vectors
-  // past its last pair (into the next row's pairs, or this padding: point 0, |xi| 1, intact).
+  // The per-pair arrays a vector loop reads (pairPoint, pairLength or pairLengthIndex,
+  // pairDamage) have kPadding entries more than there are pairs, so that a row's loop may run in
+  // whole vectors past its last pair (into the next row's pairs, or this padding: point 0, |xi|
+  // 1, intact).
   static constexpr int kPadding = 8;
   std::vector<int> rowPoint;                 // per row, in curve order: its overlap index
   std::vector<std::int64_t> rowPairOffsets;  // rows + 1
@@ -40,7 +41,14 @@ struct HalfBondList {
   // Per pair: its entry in the full list row of its earlier end if that is owned, else of its
   // later end (then owned): bondOffsets[holder] + pairSlot.
   std::vector<std::uint16_t> pairSlot;
-  std::vector<double> pairLength;  // per pair |xi|, or empty (computed in the loop)
+  // Per pair |xi|, where the run stores it (else the loops compute it, the same bits): as an
+  // index into lengthTable, the rank's distinct values, when there are at most
+  // kLengthTableLimit of them (a lattice has a few hundred: 2 bytes a pair instead of 8, and the
+  // table stays in cache), else in pairLength. The unused form is empty.
+  static constexpr std::size_t kLengthTableLimit = 65536;
+  std::vector<std::uint16_t> pairLengthIndex;
+  std::vector<double> lengthTable;
+  std::vector<double> pairLength;
   // Per pair, only where some bond on this rank is partly damaged (0 < d < 1): a copy of its
   // damage. Empty where every bond is intact or broken (the critical stretch's damage): the
   // intact pairs are the first rowIntact of each row, and the loops read no damage.
@@ -68,8 +76,11 @@ struct HalfBondList {
     const int holder = a < t.numOwned ? a : pairPoint[p];
     return t.bondOffsets[holder] + pairSlot[p];
   }
-  // Fills pairLength with each pair's |xi| from the reference coordinates x (overlap-indexed).
-  void storeLengths(const double* x);
+  // Stores each pair's |xi| from the reference coordinates x (overlap-indexed): in
+  // pairLengthIndex and lengthTable if the rank has at most tableLimit distinct values, else in
+  // pairLength.
+  void storeLengths(const double* x, std::size_t tableLimit = kLengthTableLimit);
+  bool storesLengths() const { return !pairLength.empty() || !pairLengthIndex.empty(); }
   // Copies the run's bond damage (float or flags; null: none) into the pairs, every row in its
   // order with its broken pairs last (rowIntact).
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);

@@ -168,6 +168,54 @@ TEST(HalfBondList, LpsMatchesTheFullListsAndTheSameBondsBreak) {
   }
 }
 
+// |xi| read through the table of the rank's distinct lengths (the default where they fit), per
+// pair (too many distinct lengths: here a table limit of 1), or computed in the loop: the same
+// forces, dilatations and broken bonds to the bit, PMB and LPS, with flags and float damage.
+TEST(HalfBondList, LengthsTabledPerPairOrComputedGiveTheSameBits) {
+  for (const char* model : {"Elastic Bond Based", "Elastic"})
+    for (const bool flags : {false, true}) {
+      SCOPED_TRACE(std::string(model) + (flags ? ", flags" : ", float damage"));
+      JitteredLattice tabled(6, false, false, 3), perPair(6, false, false, 3),
+          computed(6, false, false, 3);
+      for (JitteredLattice* L : {&tabled, &perPair, &computed})
+        L->addBlock(std::string(model) == "Elastic"
+                        ? peridot::testing::material(model, "", 1.0e9, 0.25)
+                        : peridot::testing::material(model, "", 1.0e9),
+                    criticalStretch(0.01), "One", true, true, flags);
+      const double* x = tabled.fields->node("Model_Coordinates", 3);
+      HalfBondList& table = *tabled.evaluator->halfBondList();
+      HalfBondList& pairs = *perPair.evaluator->halfBondList();
+      HalfBondList& none = *computed.evaluator->halfBondList();
+      // The jittered lattice's lengths are nearly all distinct, and fewer than the limit.
+      ASSERT_FALSE(table.pairLengthIndex.empty());
+      EXPECT_TRUE(table.pairLength.empty());
+      EXPECT_GT(table.lengthTable.size(), static_cast<std::size_t>(table.numPairs() / 2));
+      pairs.storeLengths(x, 1);
+      ASSERT_TRUE(pairs.pairLengthIndex.empty());
+      ASSERT_EQ(pairs.pairLength.size(),
+                static_cast<std::size_t>(pairs.numPairs() + HalfBondList::kPadding));
+      none.pairLengthIndex.clear();
+      none.lengthTable.clear();
+      ASSERT_FALSE(none.storesLengths());
+      for (std::int64_t p = 0; p < table.numPairs(); ++p)
+        ASSERT_EQ(table.lengthTable[table.pairLengthIndex[p]], pairs.pairLength[p]) << p;
+      double broken = 0;
+      for (int step = 0; step <= 6; ++step) {
+        for (JitteredLattice* L : {&tabled, &perPair, &computed}) {
+          deform(*L, step);
+          L->evaluator->evaluate(1.0);
+        }
+        EXPECT_EQ(tabled.force(), perPair.force()) << "step " << step;
+        EXPECT_EQ(tabled.force(), computed.force()) << "step " << step;
+        EXPECT_EQ(bondDamage(tabled), bondDamage(perPair)) << "step " << step;
+        EXPECT_EQ(bondDamage(tabled), bondDamage(computed)) << "step " << step;
+        broken = 0;
+        for (float d : bondDamage(tabled)) broken += d;
+      }
+      EXPECT_GT(broken, 0.0);
+    }
+}
+
 // LPS over the half list (omega = 1/zeta) is the gradient of LPS's stored energy, which is summed
 // over the full lists: V_k f_k = -dE/dy_k with E = sum V_i W_i, by central differences.
 TEST(HalfBondList, LpsForceIsMinusTheGradientOfTheStoredEnergy) {
@@ -316,6 +364,7 @@ TEST(HalfBondList, BrokenPairsLeaveTheLoopsWithoutChangingABit) {
     EXPECT_EQ(h.pairPoint, built.pairPoint);
     EXPECT_EQ(h.pairSlot, built.pairSlot);
     EXPECT_EQ(h.pairLength, built.pairLength);
+    EXPECT_EQ(h.pairLengthIndex, built.pairLengthIndex);
     EXPECT_EQ(h.pairInfluence, built.pairInfluence);
     EXPECT_EQ(h.rowIntact, built.rowIntact);
     for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {

@@ -216,10 +216,12 @@ TEST(LeanBonds, FastStorageStoresBondLengthsWithTheSameResults) {
     if (half) {
       // The pairs hold |xi|; the full lists need none.
       EXPECT_EQ(fast.evaluator->state().bondLength, nullptr);
-      EXPECT_EQ(fast.evaluator->halfBondList()->pairLength.size(),
-                static_cast<std::size_t>(fast.evaluator->halfBondList()->numPairs() +
-                                         HalfBondList::kPadding));
-      EXPECT_TRUE(lean.evaluator->halfBondList()->pairLength.empty());
+      // (Through the table of the lattice's distinct lengths: HalfBondList::storeLengths.)
+      const HalfBondList& pairs = *fast.evaluator->halfBondList();
+      EXPECT_EQ(pairs.pairLengthIndex.size(),
+                static_cast<std::size_t>(pairs.numPairs() + HalfBondList::kPadding));
+      EXPECT_FALSE(pairs.lengthTable.empty());
+      EXPECT_FALSE(lean.evaluator->halfBondList()->storesLengths());
     } else {
       ASSERT_NE(fast.evaluator->state().bondLength, nullptr);
     }
