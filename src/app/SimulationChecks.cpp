@@ -198,7 +198,7 @@ void Simulation::reportSetup() {
   MPI_Allreduce(&myBonds, &maxBonds, 1, MPI_LONG_LONG, MPI_MAX, comm_);
   // Communication volume: what a rank sends in one ghost exchange of a 3-vector field (the
   // positions, refreshed once per force evaluation), from the ghost Import's export list.
-  long long sent[2] = {8 * static_cast<long long>(topology_.ghostImport3->getNumExportIDs()),
+  long long sent[2] = {24 * static_cast<long long>(topology_.ghostImport->getNumExportIDs()),
                        static_cast<long long>(topology_.numGhosts)};
   long long sentMax[2] = {0, 0}, sentSum[2] = {0, 0};
   MPI_Allreduce(sent, sentMax, 2, MPI_LONG_LONG, MPI_MAX, comm_);

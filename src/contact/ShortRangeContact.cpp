@@ -188,12 +188,12 @@ void ShortRangeContact::search(const double* y) {
   ghostMap3_ =
       Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                            Teuchos::ArrayView<const GlobalOrdinal>(ghost3.data(), ghost3.size()), 0,
-                           topology_.ownedMap3->getComm()));
-  ghostImport3_ = Teuchos::rcp(new Import(topology_.ownedMap3, ghostMap3_));
+                           topology_.ownedMap3()->getComm()));
+  ghostImport3_ = Teuchos::rcp(new Import(topology_.ownedMap3(), ghostMap3_));
 }
 
 void ShortRangeContact::refresh(const double* owned, std::vector<double>& ghost) {
-  Vector source(topology_.ownedMap3, false), target(ghostMap3_, false);
+  Vector source(topology_.ownedMap3(), false), target(ghostMap3_, false);
   {
     auto data = source.getDataNonConst();
     std::copy(owned, owned + 3 * topology_.numOwned, data.getRawPtr());

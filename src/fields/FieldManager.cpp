@@ -19,18 +19,17 @@ double* FieldManager::node(const std::string& name, int components) {
   f.name = name;
   f.components = components;
   const int n = topology_.numOverlap * components;
-  // The overlap vector's map only sizes the storage; communication uses the owned/ghost views.
+  // The overlap vector's map only sizes the storage; the exchanges move whole points with the
+  // scalar maps' Import (PointValues).
   auto teuchosComm = topology_.ownedMap->getComm();
   auto storageMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                          static_cast<size_t>(n), 0, teuchosComm));
   f.overlap = Teuchos::rcp(new Vector(storageMap, true));
-  const auto& owned = components == 1 ? topology_.ownedMap : topology_.ownedMap3;
-  const auto& ghost = components == 1 ? topology_.ghostMap : topology_.ghostMap3;
-  f.ownedView = f.overlap->offsetViewNonConst(owned, 0)->getVectorNonConst(0);
-  f.ghostView =
-      f.overlap->offsetViewNonConst(ghost, static_cast<size_t>(topology_.numOwned) * components)
-          ->getVectorNonConst(0);  // regular ghosts; periodic images follow them
   f.data = f.overlap->getDataNonConst().getRawPtr();
+  f.owned = Teuchos::rcp(new PointValues(topology_.ownedMap, f.data, components));
+  f.ghosts = Teuchos::rcp(new PointValues(
+      topology_.ghostMap, f.data + static_cast<std::size_t>(topology_.numOwned) * components,
+      components));  // regular ghosts; periodic images follow them
   return nodeFields_.emplace(name, std::move(f)).first->second.data;
 }
 
@@ -44,14 +43,7 @@ void FieldManager::refreshGhosts(const std::string& name) {
   auto it = nodeFields_.find(name);
   if (it == nodeFields_.end()) throw std::logic_error("no node field " + name);
   NodeField& f = it->second;
-  // The imports move 1 or 3 values a point; a wider field (a 3x3 tensor) would be exchanged
-  // wrongly without a word: ghost such a field by rows of 3.
-  if (f.components != 1 && f.components != 3)
-    throw std::logic_error("ghost refresh of " + name + ": only 1 or 3 components a point");
-  if (topology_.numRanks > 1) {
-    const auto& importer = f.components == 1 ? topology_.ghostImport : topology_.ghostImport3;
-    f.ghostView->doImport(*f.ownedView, *importer, Tpetra::INSERT);
-  }
+  if (topology_.numRanks > 1) f.ghosts->doImport(*f.owned, *topology_.ghostImport, Tpetra::INSERT);
   // Periodic images copy their real point; positions move with the image's shift.
   const int c = f.components;
   const bool position = positionFields_.count(name) > 0;

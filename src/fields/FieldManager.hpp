@@ -1,6 +1,6 @@
 #pragma once
 // Registry of named fields. Node fields are Tpetra vectors on the overlap map (owned points
-// first, then ghosts) with 1 or 3 components interleaved per point; bond fields are flat arrays
+// first, then ghosts) with their components interleaved per point; bond fields are flat arrays
 // aligned with the CSR bond lists (global values are computed by the output). Nothing is allocated
 // until a model, a boundary condition or an output asks for it by name.
 #include <Tpetra_Vector.hpp>
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "fields/PointValues.hpp"
 #include "parallel/Topology.hpp"
 
 namespace peridot {
@@ -19,10 +20,10 @@ using Vector = Tpetra::Vector<double, LocalOrdinal, GlobalOrdinal>;
 struct NodeField {
   std::string name;
   int components = 1;
-  Teuchos::RCP<Vector> overlap;    // owns the storage
-  Teuchos::RCP<Vector> ownedView;  // view of the owned prefix
-  Teuchos::RCP<Vector> ghostView;  // view of the ghost tail
-  double* data = nullptr;          // components * numOverlap values
+  Teuchos::RCP<Vector> overlap;      // owns the storage
+  Teuchos::RCP<PointValues> owned;   // the owned prefix, by point (ownedMap)
+  Teuchos::RCP<PointValues> ghosts;  // the regular ghosts that follow it (ghostMap)
+  double* data = nullptr;            // components * numOverlap values
 };
 
 class FieldManager {

@@ -16,6 +16,13 @@ namespace peridot {
 
 namespace {
 
+Teuchos::RCP<const Map> nonContiguousMap(const std::vector<GlobalOrdinal>& gids,
+                                         const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
+  return Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                              Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()), 0,
+                              comm));
+}
+
 // What every rank must agree on before the search: global extent, reach, horizon variation.
 struct GlobalFacts {
   double lo[3], hi[3];  // bounding box of all points
@@ -414,28 +421,23 @@ Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
   MPI_Allreduce(&localBonds, &t.globalNumBonds, 1, MPI_LONG_LONG, MPI_SUM, comm);
 
   auto teuchosComm = Teuchos::rcp(new Teuchos::MpiComm<int>(comm));
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   std::vector<GlobalOrdinal> ids(t.overlapGlobalId.begin(), t.overlapGlobalId.begin() + t.numOwned);
   std::vector<GlobalOrdinal> ghostIds(t.overlapGlobalId.begin() + t.numOwned,
                                       t.overlapGlobalId.begin() + t.numOwned + t.numGhosts);
-  auto makeMap = [&](const std::vector<GlobalOrdinal>& gids) {
-    return Teuchos::rcp(new Map(invalid,
-                                Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()),
-                                0, teuchosComm));
-  };
-  auto expand3 = [](const std::vector<GlobalOrdinal>& gids) {
-    std::vector<GlobalOrdinal> out(3 * gids.size());
-    for (std::size_t k = 0; k < gids.size(); ++k)
-      for (int d = 0; d < 3; ++d) out[3 * k + d] = 3 * gids[k] + d;
-    return out;
-  };
-  t.ownedMap = makeMap(ids);
-  t.ghostMap = makeMap(ghostIds);
-  t.ownedMap3 = makeMap(expand3(ids));
-  t.ghostMap3 = makeMap(expand3(ghostIds));
+  t.ownedMap = nonContiguousMap(ids, teuchosComm);
+  t.ghostMap = nonContiguousMap(ghostIds, teuchosComm);
   t.ghostImport = Teuchos::rcp(new Import(t.ownedMap, t.ghostMap));
-  t.ghostImport3 = Teuchos::rcp(new Import(t.ownedMap3, t.ghostMap3));
   return t;
+}
+
+const Teuchos::RCP<const Map>& Topology::ownedMap3() const {
+  if (ownedMap3_.is_null()) {
+    std::vector<GlobalOrdinal> ids(3 * static_cast<std::size_t>(numOwned));
+    for (std::size_t k = 0; k < static_cast<std::size_t>(numOwned); ++k)
+      for (int d = 0; d < 3; ++d) ids[3 * k + d] = 3 * overlapGlobalId[k] + d;
+    ownedMap3_ = nonContiguousMap(ids, ownedMap->getComm());
+  }
+  return ownedMap3_;
 }
 
 }  // namespace peridot

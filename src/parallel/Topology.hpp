@@ -62,13 +62,21 @@ struct Topology {
   std::vector<unsigned char> bondSides;
   bool ownSide(std::int64_t b) const { return bondSides.empty() || (bondSides[b] & 1); }
 
-  // Tpetra maps: scalar maps (one entry per point) and vector maps (3 per point: 3*gid + d).
+  // Tpetra maps of the points (one entry each) and the Import that refreshes the ghosts. Node
+  // fields of any width move by these (fields/PointValues.hpp).
   Teuchos::RCP<const Map> ownedMap, ghostMap;
-  Teuchos::RCP<const Map> ownedMap3, ghostMap3;
-  Teuchos::RCP<const Import> ghostImport, ghostImport3;
+  Teuchos::RCP<const Import> ghostImport;
+  // The owned degrees of freedom, 3 a point (3*gid + d), for the solvers' vectors and matrices.
+  // Built on the first call, which is collective (every rank calls it, as the solvers' set-ups
+  // do): a non-contiguous Map keeps every id and a hash of them (200 MB at 128^3 on one rank),
+  // which an explicit run does not need.
+  const Teuchos::RCP<const Map>& ownedMap3() const;
 
   int numNeighbors(int i) const { return static_cast<int>(bondOffsets[i + 1] - bondOffsets[i]); }
   std::int64_t numBonds() const { return bondOffsets.empty() ? 0 : bondOffsets.back(); }
+
+ private:
+  mutable Teuchos::RCP<const Map> ownedMap3_;
 };
 
 struct TopologyOptions {

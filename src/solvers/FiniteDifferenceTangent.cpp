@@ -136,13 +136,13 @@ FiniteDifferenceTangent::FiniteDifferenceTangent(const Topology& topology,
   // Colour of every column (imported onto the column map).
   std::vector<int> columnColour(colMap->getNodeNumElements(), 0);
   {
-    Vector owned(topology.ownedMap3), onColumns(colMap);
+    Vector owned(topology.ownedMap3()), onColumns(colMap);
     {
       auto view = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (int a = 0; a < n; ++a)
         for (int d = 0; d < 3; ++d) view(3 * a + d, 0) = colour[a];
     }
-    Tpetra::Import<LocalOrdinal, GlobalOrdinal> import(topology.ownedMap3, colMap);
+    Tpetra::Import<LocalOrdinal, GlobalOrdinal> import(topology.ownedMap3(), colMap);
     onColumns.doImport(owned, import, Tpetra::INSERT);
     auto view = onColumns.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t k = 0; k < columnColour.size(); ++k)
@@ -249,7 +249,7 @@ void FiniteDifferenceTangent::fill(double dt, double velocityRate, const double*
 
   // Held degrees of freedom: zero rows and columns, `heldDiagonal` on the diagonal.
   const auto colMap = matrix_->getColMap();
-  Vector heldOwned(topology_.ownedMap3), heldColumns(colMap);
+  Vector heldOwned(topology_.ownedMap3()), heldColumns(colMap);
   {
     auto view = heldOwned.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (int r = 0; r < 3 * n; ++r) view(r, 0) = held[r];
@@ -276,7 +276,7 @@ void FiniteDifferenceTangent::fill(double dt, double velocityRate, const double*
     matrix_->replaceLocalValues(r, static_cast<LocalOrdinal>(rowOffsets_[r + 1] - rowOffsets_[r]),
                                 values_.data() + rowOffsets_[r], columns_.data() + rowOffsets_[r]);
   }
-  matrix_->fillComplete(topology_.ownedMap3, topology_.ownedMap3);
+  matrix_->fillComplete(topology_.ownedMap3(), topology_.ownedMap3());
 }
 
 double FiniteDifferenceTangent::bytes() const {

@@ -62,7 +62,7 @@ NOXQuasiStatic::NOXQuasiStatic(const NOXQuasiStaticConfig& config, SolverContext
   const bool needsTangent = !config_.matrixFree || config_.linear.preconditioner != "None";
   if (needsTangent)
     tangent_ = std::make_unique<Tangent>(*c_.topology, *c_.blocks, config_.path, c_.probe());
-  const auto& map = c_.topology->ownedMap3;
+  const auto& map = c_.topology->ownedMap3();
   matrixFree_ = Teuchos::rcp(new MatrixFreeStiffness(*this, map));
   baseXStore_ = std::make_unique<TpetraVector>(map);
   baseFStore_ = std::make_unique<TpetraVector>(map);
@@ -243,7 +243,7 @@ void NOXQuasiStatic::run() {
   const int n3 = 3 * t.numOwned;
   std::ostream& log = *c_.log;
   const auto& times = config_.times;
-  const auto& map = t.ownedMap3;
+  const auto& map = t.ownedMap3();
   std::vector<double> stepStart(n3, 0.0);
   double time = times[0];
   std::vector<double> rate = problem_.start(time);

@@ -78,7 +78,7 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
   std::vector<GlobalOrdinal> gids(3 * static_cast<std::size_t>(numRowPoints_));
   for (int k = 0; k < numRowPoints_; ++k)
     for (int d = 0; d < 3; ++d) gids[3 * k + d] = 3 * topology.overlapGlobalId[k] + d;
-  const auto comm = topology.ownedMap3->getComm();
+  const auto comm = topology.ownedMap3()->getComm();
   overlapMap3_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                       Teuchos::ArrayView<const GlobalOrdinal>(gids), 0, comm));
   std::vector<std::size_t> entries(3 * static_cast<std::size_t>(numRowPoints_));
@@ -95,17 +95,17 @@ Tangent::Tangent(const Topology& topology, const std::vector<Block>& blocks,
     for (int d = 0; d < 3; ++d)
       graph->insertLocalIndices(3 * a + d, Teuchos::ArrayView<const LocalOrdinal>(rowColumns_));
   }
-  graph->fillComplete(topology.ownedMap3, topology.ownedMap3);
+  graph->fillComplete(topology.ownedMap3(), topology.ownedMap3());
   overlap_ = Teuchos::rcp(new CrsMatrix(graph));
-  overlap_->fillComplete(topology.ownedMap3, topology.ownedMap3);
+  overlap_->fillComplete(topology.ownedMap3(), topology.ownedMap3());
   export_ = Teuchos::rcp(
-      new Tpetra::Export<LocalOrdinal, GlobalOrdinal>(overlapMap3_, topology.ownedMap3));
+      new Tpetra::Export<LocalOrdinal, GlobalOrdinal>(overlapMap3_, topology.ownedMap3()));
   if (probed) {
     blocks_.values = std::vector<double>();  // not filled: the probes go to the owned rows
     // The owned pattern (all zeros here), probed into at every assembly.
     owned_ = Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(
-        Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology.ownedMap3,
-        topology.ownedMap3);
+        Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology.ownedMap3(),
+        topology.ownedMap3());
     fd_ = std::make_unique<FiniteDifferenceTangent>(topology, owned_, probe);
     overlap_ = Teuchos::null;  // only the owned rows are probed
     export_ = Teuchos::null;
@@ -155,10 +155,10 @@ void Tangent::assemble(const ModelState& state, const std::vector<Block>& blocks
                                    rowValues_.data(), rowColumns_.data());
     }
   }
-  overlap_->fillComplete(topology_.ownedMap3, topology_.ownedMap3);
+  overlap_->fillComplete(topology_.ownedMap3(), topology_.ownedMap3());
   owned_ = Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(
-      Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology_.ownedMap3,
-      topology_.ownedMap3);
+      Teuchos::rcp_const_cast<const CrsMatrix>(overlap_), *export_, topology_.ownedMap3(),
+      topology_.ownedMap3());
 }
 
 double Tangent::bytes() const {
