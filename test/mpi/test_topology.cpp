@@ -189,16 +189,20 @@ TEST(Topology, GhostExchangeCopiesOwnerValues) {
   FieldManager fields(t);
   double* s = fields.node("Scalar", 1);
   double* v = fields.node("Vector", 3);
+  double* m = fields.node("Tensor", 9);  // a whole point a packet, whatever its width
   for (int i = 0; i < t.numOverlap; ++i) {
     const bool owned = i < t.numOwned;
     s[i] = owned ? 0.5 * static_cast<double>(t.overlapGlobalId[i]) : -1.0;
     for (int d = 0; d < 3; ++d) v[3 * i + d] = owned ? 10.0 * t.overlapGlobalId[i] + d : -1.0;
+    for (int d = 0; d < 9; ++d) m[9 * i + d] = owned ? 100.0 * t.overlapGlobalId[i] + d : -1.0;
   }
   fields.refreshGhosts("Scalar");
   fields.refreshGhosts("Vector");
+  fields.refreshGhosts("Tensor");
   for (int i = 0; i < t.numOverlap; ++i) {
     EXPECT_EQ(s[i], 0.5 * static_cast<double>(t.overlapGlobalId[i]));
     for (int d = 0; d < 3; ++d) EXPECT_EQ(v[3 * i + d], 10.0 * t.overlapGlobalId[i] + d);
+    for (int d = 0; d < 9; ++d) EXPECT_EQ(m[9 * i + d], 100.0 * t.overlapGlobalId[i] + d);
   }
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
