@@ -26,6 +26,7 @@ void permute(std::vector<T>& v, std::int64_t p0, const std::vector<int>& order) 
 void permuteRow(HalfBondList& h, std::int64_t p0, const std::vector<int>& order) {
   permute(h.pairPoint, p0, order);
   permute(h.pairSlot, p0, order);
+  permute(h.pairSlotHigh, p0, order);
   permute(h.pairLength, p0, order);
   permute(h.pairLengthIndex, p0, order);
   permute(h.pairDamage, p0, order);
@@ -37,7 +38,7 @@ void permuteRow(HalfBondList& h, std::int64_t p0, const std::vector<int>& order)
 std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowIntact.size() * sizeof(int) +
          rowPairOffsets.size() * sizeof(std::int64_t) + pairPoint.size() * sizeof(int) +
-         pairSlot.size() * sizeof(std::uint16_t) + pairLength.size() * sizeof(double) +
+         pairSlot.size() + pairSlotHigh.size() + pairLength.size() * sizeof(double) +
          pairLengthIndex.size() * sizeof(std::uint16_t) + lengthTable.size() * sizeof(double) +
          pairDamage.size() * sizeof(float) + pairInfluence.size() * sizeof(double);
 }
@@ -68,7 +69,7 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
     // ghost row's by owned point), then its intact pairs first. Nothing to move in a row in its
     // order without broken pairs (every row at the start of a run).
     const bool owned = rowPoint[r] < t.numOwned;
-    const auto key = [&](int k) { return owned ? int{pairSlot[p0 + k]} : pairPoint[p0 + k]; };
+    const auto key = [&](int k) { return owned ? slot(p0 + k) : pairPoint[p0 + k]; };
     const auto intact = [&](int k) { return damageOf(r, p0 + k) != 1.0f; };
     bool inOrder = true, allIntact = true;
     for (int k = 0; k < m; ++k) {
@@ -130,6 +131,7 @@ void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke
   };
   compact(pairPoint);
   compact(pairSlot);
+  compact(pairSlotHigh);
   compact(pairLength);
   compact(pairLengthIndex);
   compact(pairDamage);
@@ -259,22 +261,30 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
     list.rowIntact[r] = static_cast<int>(list.rowPairOffsets[r + 1] - list.rowPairOffsets[r]);
   list.pairPoint.assign(static_cast<std::size_t>(pairs + HalfBondList::kPadding), 0);
   list.pairSlot.resize(static_cast<std::size_t>(pairs));
+  std::int64_t longestFullRow = 0;
+  for (int i = 0; i < n; ++i)
+    longestFullRow = std::max(longestFullRow, t.bondOffsets[i + 1] - t.bondOffsets[i]);
+  if (longestFullRow > 256) list.pairSlotHigh.resize(static_cast<std::size_t>(pairs));
+  const bool wide = !list.pairSlotHigh.empty();
   std::vector<std::int64_t> ownedRowStart(static_cast<std::size_t>(n));
   for (std::size_t r = 0; r < rows; ++r)
     if (list.rowPoint[r] < n) ownedRowStart[list.rowPoint[r]] = list.rowPairOffsets[r];
   for (int i = 0; i < n; ++i)
     for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
       const int j = t.neighbors[e];
-      const auto slot = static_cast<std::uint16_t>(e - t.bondOffsets[i]);
+      const auto slot = static_cast<int>(e - t.bondOffsets[i]);
+      std::int64_t p;
       if (after(i, j)) {
-        const std::int64_t p = ownedRowStart[i]++;
+        p = ownedRowStart[i]++;
         list.pairPoint[p] = j;
-        list.pairSlot[p] = slot;
       } else if (j >= n) {
-        const std::int64_t p = ghostRowStart[j - n]++;
+        p = ghostRowStart[j - n]++;
         list.pairPoint[p] = i;
-        list.pairSlot[p] = slot;
+      } else {
+        continue;
       }
+      list.pairSlot[p] = static_cast<std::uint8_t>(slot & 0xff);
+      if (wide) list.pairSlotHigh[p] = static_cast<std::uint8_t>(slot >> 8);
     }
 
   return true;

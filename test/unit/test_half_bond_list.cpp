@@ -84,11 +84,8 @@ void stepAlike(JitteredLattice& half, JitteredLattice& full, const char* also) {
 
 }  // namespace
 
-TEST(HalfBondList, EveryBondOnceWithItsFullListEntriesInCurveOrder) {
-  JitteredLattice L(6, false, false, 5);
-  const Topology& t = L.topology;
-  HalfBondList h;
-  ASSERT_TRUE(buildHalfBondList(t, h));
+// Every bond once, in curve order, each pair's full-list entries found (HalfBondList::fullEntry).
+static void expectEveryBondOnceInCurveOrder(const Topology& t, const HalfBondList& h) {
   EXPECT_EQ(2 * h.numPairs(), t.numBonds());
   const auto key = [&](int k) {
     return std::make_pair(mortonKey(&t.referencePosition[3 * k], t.curveLo, t.curveHi),
@@ -120,6 +117,51 @@ TEST(HalfBondList, EveryBondOnceWithItsFullListEntriesInCurveOrder) {
     }
   }
   EXPECT_EQ(static_cast<std::int64_t>(seen.size()), h.numPairs());
+}
+
+TEST(HalfBondList, EveryBondOnceWithItsFullListEntriesInCurveOrder) {
+  JitteredLattice L(6, false, false, 5);
+  HalfBondList h;
+  ASSERT_TRUE(buildHalfBondList(L.topology, h));
+  EXPECT_TRUE(h.pairSlotHigh.empty()) << "rows of ~33 bonds need one byte a slot";
+  expectEveryBondOnceInCurveOrder(L.topology, h);
+}
+
+// Full rows past 256 entries: a slot's high byte is kept too. A one-byte slot would find the
+// wrong entry for every bond past the 256th of its row (checked by dropping pairSlotHigh).
+TEST(HalfBondList, SlotsPastTheFirstByteWhereRowsAreLong) {
+  PointCloud cloud;
+  std::vector<double> horizon;
+  const int n = 11;
+  long long id = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
+        cloud.volume.push_back(1.0);
+        cloud.blockId.push_back(1);
+        cloud.globalId.push_back(id++);
+        horizon.push_back(4.5);  // ~380 neighbours inside
+      }
+  cloud.blockNames[1] = "block_1";
+  const Topology t = buildTopology(cloud, horizon, TopologyOptions(), MPI_COMM_SELF);
+  int longest = 0;
+  for (int i = 0; i < t.numOwned; ++i) longest = std::max(longest, t.numNeighbors(i));
+  ASSERT_GT(longest, 256);
+  HalfBondList h;
+  ASSERT_TRUE(buildHalfBondList(t, h));
+  ASSERT_FALSE(h.pairSlotHigh.empty());
+  expectEveryBondOnceInCurveOrder(t, h);
+  // Breaking pairs moves them behind their row's intact ones: both bytes of the slot move along.
+  std::vector<int> broke;
+  for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
+    broke.assign(static_cast<std::size_t>(h.rowIntact[r]), 0);
+    for (std::size_t k = 0; k < broke.size(); k += 3) broke[k] = 1;
+    h.breakPairs(t, r, broke.data());
+    for (std::int64_t p = h.rowPairOffsets[r]; p < h.rowPairOffsets[r + 1]; ++p)
+      ASSERT_EQ(t.neighbors[h.fullEntry(t, r, p)],
+                h.rowPoint[r] < t.numOwned ? h.pairPoint[p] : h.rowPoint[r]);
+  }
 }
 
 // PMB and normalized PMB with the fused critical stretch, float damage and broken-bond flags,
@@ -330,8 +372,8 @@ TEST(HalfBondList, BrokenPairsLeaveTheLoopsWithoutChangingABit) {
             ASSERT_LT(previous, h.rowPoint[r] < t.numOwned ? e : h.pairPoint[p]);
             previous = h.rowPoint[r] < t.numOwned ? e : h.pairPoint[p];
           }
-          pairs.emplace_back(h.pairPoint[p], h.pairSlot[p]);
-          pairsBuilt.emplace_back(built.pairPoint[p], built.pairSlot[p]);
+          pairs.emplace_back(h.pairPoint[p], h.slot(p));
+          pairsBuilt.emplace_back(built.pairPoint[p], built.slot(p));
         }
         std::sort(pairs.begin(), pairs.end());
         std::sort(pairsBuilt.begin(), pairsBuilt.end());
