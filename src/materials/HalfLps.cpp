@@ -80,6 +80,7 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     if constexpr (kBreak) {
       if (anyBroke) {
         h.breakPairs(t, r, broke);
+        if (h.breakBatchFull()) h.recordBreaks(t, full);
       }
     }
   }

@@ -89,6 +89,7 @@ void halfLoop(const ModelState& s, const double* c) {
       if (anyBroke) {
         // Out of the loop from now on; in the full lists at the end of the pass.
         h.breakPairs(t, r, broke);
+        if (h.breakBatchFull()) h.recordBreaks(t, full);
       }
     }
   }
