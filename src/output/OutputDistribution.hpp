@@ -30,16 +30,15 @@ class OutputDistribution {
   long long rangeBegin(int r) const;
   long long localBegin() const { return rangeBegin(rank_); }
   long long localCount() const { return rangeBegin(rank_ + 1) - rangeBegin(rank_); }
-  // Output position of each owned point (owned order).
-  const std::vector<long long>& ownedPosition() const { return ownedPosition_; }
 
   // Collective: owned values (`components` per point, interleaved, owned order) to this rank's
   // range, in output order.
   void toRange(const double* owned, int components, std::vector<double>& range) const;
   void toRange(const long long* owned, int components, std::vector<long long>& range) const;
-  // Collective: the output positions, within this rank's range and sorted, of the points of a
-  // set given as the sorted global ids of the owned points in it.
-  std::vector<long long> setInRange(const std::vector<long long>& ownedSetIds) const;
+  // Collective: for each set, given as the sorted global ids of the owned points in it, the
+  // output positions of its points within this rank's range, sorted.
+  std::vector<std::vector<long long>> setsInRange(
+      const std::vector<const std::vector<long long>*>& ownedSetIds) const;
 
  private:
   template <class T>
@@ -50,9 +49,7 @@ class OutputDistribution {
   long long numPoints_ = 0;
   std::vector<int> blockIds_;
   std::vector<long long> blockCounts_;
-  std::vector<long long> ownedPosition_;
-  std::vector<long long> ownedIdSorted_;  // owned global ids, sorted
-  std::vector<int> ownedIdOrder_;         // owned index of each entry of ownedIdSorted_
+  const std::vector<GlobalOrdinal>& overlapGlobalId_;  // the topology's
   // The plan owned order -> ranges: owned indices in send order, per-rank counts (points), and
   // for each received point its slot in the local range.
   std::vector<int> sendOrder_;

@@ -300,27 +300,28 @@ void OutputManager::writeMesh(File& f) {
                        });
   }
   // Node sets: each rank's members within its range are consecutive entries of the set.
-  int set = 0;
-  for (const auto& kv : nodeSets_) {
-    const std::vector<long long> positions = d.setInRange(kv.second);
+  std::vector<const std::vector<long long>*> sets;
+  for (const auto& kv : nodeSets_) sets.push_back(&kv.second);
+  const std::vector<std::vector<long long>> inRange = d.setsInRange(sets);
+  for (std::size_t set = 0; set < inRange.size(); ++set) {
+    const std::vector<long long>& positions = inRange[set];
     long long mine = static_cast<long long>(positions.size());
     std::vector<long long> counts(topology_.rank == 0 ? topology_.numRanks : 0);
     MPI_Gather(&mine, 1, MPI_LONG_LONG, counts.data(), 1, MPI_LONG_LONG, 0, topology_.comm);
     if (topology_.rank != 0) {
       MPI_Send(positions.data(), static_cast<int>(mine), MPI_LONG_LONG, 0, 1, topology_.comm);
     } else {
-      onRoot([&] { f.writer->putSet(set, 0, mine, positions.data()); });
+      onRoot([&] { f.writer->putSet(static_cast<int>(set), 0, mine, positions.data()); });
       long long offset = mine;
       std::vector<long long> buffer;
       for (int r = 1; r < topology_.numRanks; ++r) {
         buffer.resize(static_cast<std::size_t>(counts[r]));
         MPI_Recv(buffer.data(), static_cast<int>(counts[r]), MPI_LONG_LONG, r, 1, topology_.comm,
                  MPI_STATUS_IGNORE);
-        onRoot([&] { f.writer->putSet(set, offset, counts[r], buffer.data()); });
+        onRoot([&] { f.writer->putSet(static_cast<int>(set), offset, counts[r], buffer.data()); });
         offset += counts[r];
       }
     }
-    ++set;
   }
   onRoot([&] { f.writer->endRecord(); });  // flush the mesh
   raiseErrors();
