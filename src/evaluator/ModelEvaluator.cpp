@@ -188,6 +188,7 @@ void ModelEvaluator::initialize() {
           break;
         }
     throwIfAnyRank(message, topology_.comm);
+    fields_.release("Material_Family_Index");
   }
 
   std::set<MaterialModel*> declared;

@@ -33,6 +33,9 @@ class FieldManager {
   // Returns the field's storage, allocating it (zeroed) on first request.
   double* node(const std::string& name, int components);
   const NodeField& nodeField(const std::string& name) const;
+  // Frees a node field that nothing reads any more (a set-up check's); asking for it again
+  // allocates it anew, zeroed.
+  void release(const std::string& name) { nodeFields_.erase(name); }
   // Copies owned values to the ghost copies on other ranks, and to periodic images.
   void refreshGhosts(const std::string& name);
   // A position field's periodic images are shifted by the box, not plain copies.
