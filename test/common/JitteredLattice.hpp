@@ -1,8 +1,9 @@
 #pragma once
 // A serial jittered lattice for bit-for-bit kernel tests (a fused bond loop against its separate
 // pass): n^3 points (n^2 in z = 0 when planar) of spacing 1, each coordinate and volume moved by
-// up to 0.05, horizons 2.1 or (varyingHorizon) drawn from 1.9..2.3 so that some bonds are
-// one-sided; the fields set from the topology. The test adds its block and then the evaluator.
+// up to 0.05, horizons `horizon` (2.1) or (varyingHorizon) drawn from 1.9..2.3 so that some
+// bonds are one-sided; the fields set from the topology. The test adds its block and then the
+// evaluator.
 #include <memory>
 #include <random>
 #include <string>
@@ -22,9 +23,9 @@ struct JitteredLattice {
   Timers timers;
   std::unique_ptr<ModelEvaluator> evaluator;
 
-  JitteredLattice(int n, bool planar, bool varyingHorizon, unsigned seed) {
+  JitteredLattice(int n, bool planar, bool varyingHorizon, unsigned seed, double horizon = 2.1) {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> jitter(-0.05, 0.05), horizon(1.9, 2.3);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05), drawn(1.9, 2.3);
     long long id = 0;
     std::vector<double> h;
     for (int k = 0; k < (planar ? 1 : n); ++k)
@@ -35,7 +36,7 @@ struct JitteredLattice {
           cloud.volume.push_back(1.0 + jitter(rng));
           cloud.blockId.push_back(1);
           cloud.globalId.push_back(id++);
-          h.push_back(varyingHorizon ? horizon(rng) : 2.1);
+          h.push_back(varyingHorizon ? drawn(rng) : horizon);
         }
     cloud.blockNames[1] = "block_1";
     if (planar) cloud.dimension = 2;

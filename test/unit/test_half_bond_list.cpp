@@ -130,21 +130,8 @@ TEST(HalfBondList, EveryBondOnceWithItsFullListEntriesInCurveOrder) {
 // Full rows past 256 entries: a slot's high byte is kept too. A one-byte slot would find the
 // wrong entry for every bond past the 256th of its row (checked by dropping pairSlotHigh).
 TEST(HalfBondList, SlotsPastTheFirstByteWhereRowsAreLong) {
-  PointCloud cloud;
-  std::vector<double> horizon;
-  const int n = 11;
-  long long id = 0;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
-        cloud.volume.push_back(1.0);
-        cloud.blockId.push_back(1);
-        cloud.globalId.push_back(id++);
-        horizon.push_back(4.5);  // ~380 neighbours inside
-      }
-  cloud.blockNames[1] = "block_1";
-  const Topology t = buildTopology(cloud, horizon, TopologyOptions(), MPI_COMM_SELF);
+  JitteredLattice L(11, false, false, 7, 4.5);  // ~380 neighbours inside
+  const Topology& t = L.topology;
   int longest = 0;
   for (int i = 0; i < t.numOwned; ++i) longest = std::max(longest, t.numNeighbors(i));
   ASSERT_GT(longest, 256);
