@@ -164,25 +164,28 @@ inline double pairZeta(const double* rowLength, int k, int b, const double* x, c
     return rowLength[k];
 }
 
+// Calls loop(std::integral_constant<int, LengthSource>) for where the pairs keep |xi|.
+template <typename Loop>
+void withLengthSource(const HalfBondList& h, Loop&& loop) {
+  if (!h.pairLengthIndex.empty())
+    loop(std::integral_constant<int, kTabledLength>{});
+  else if (!h.pairLength.empty())
+    loop(std::integral_constant<int, kPairLength>{});
+  else
+    loop(std::integral_constant<int, kComputedLength>{});
+}
+
 // Calls loop(std::integral_constant<int, LengthSource>, DamageT) for the run's storage: where
 // |xi| is read, and the run's damage form (float, or unsigned char flags).
 template <typename Loop>
 void withStorage(const ModelState& s, Loop&& loop) {
   const bool flags = s.bondBroken != nullptr;
-  const HalfBondList& h = *s.halfBonds;
-  using Flag = unsigned char;
-  const auto withDamageForm = [&](auto source) {
+  withLengthSource(*s.halfBonds, [&](auto source) {
     if (flags)
-      loop(source, Flag{});
+      loop(source, static_cast<unsigned char>(0));
     else
       loop(source, float{});
-  };
-  if (!h.pairLengthIndex.empty())
-    withDamageForm(std::integral_constant<int, kTabledLength>{});
-  else if (!h.pairLength.empty())
-    withDamageForm(std::integral_constant<int, kPairLength>{});
-  else
-    withDamageForm(std::integral_constant<int, kComputedLength>{});
+  });
 }
 
 }  // namespace peridot::half

@@ -179,16 +179,12 @@ void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double
 void halfLpsForce(const ModelState& s, const double* thetaBeta, const double* alpha) {
   const bool influence = !s.halfBonds->pairInfluence.empty();
   const bool damaged = !s.halfBonds->pairDamage.empty();  // some bond partly damaged
-  const HalfBondList& h = *s.halfBonds;
   const auto run = [&](auto withInfluence, auto withDamage) {
     constexpr bool kInfluence = decltype(withInfluence)::value;
     constexpr bool kDamage = decltype(withDamage)::value;
-    if (!h.pairLengthIndex.empty())
-      forceLoop<kInfluence, kDamage, half::kTabledLength>(s, thetaBeta, alpha);
-    else if (!h.pairLength.empty())
-      forceLoop<kInfluence, kDamage, half::kPairLength>(s, thetaBeta, alpha);
-    else
-      forceLoop<kInfluence, kDamage, half::kComputedLength>(s, thetaBeta, alpha);
+    half::withLengthSource(*s.halfBonds, [&](auto source) {
+      forceLoop<kInfluence, kDamage, decltype(source)::value>(s, thetaBeta, alpha);
+    });
   };
   if (influence && damaged)
     run(std::true_type{}, std::true_type{});
