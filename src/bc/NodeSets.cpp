@@ -4,9 +4,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <unordered_map>
 
 #include "core/Error.hpp"
+#include "core/IdIndex.hpp"
 #include "core/InputFile.hpp"
 
 namespace peridot {
@@ -66,10 +66,8 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
   for (int i = 0; i < topology.numOwned; ++i)
     localMax = std::max(localMax, topology.overlapGlobalId[i] + 1);
   MPI_Allreduce(&localMax, &maxId, 1, MPI_LONG_LONG, MPI_MAX, topology.comm);
-  std::vector<long long> owned(topology.overlapGlobalId.begin(),
-                               topology.overlapGlobalId.begin() + topology.numOwned);
-  std::sort(owned.begin(), owned.end());
-  auto isOwned = [&](long long g) { return std::binary_search(owned.begin(), owned.end(), g); };
+  const IdIndex owned(topology.overlapGlobalId.data(), static_cast<std::size_t>(topology.numOwned));
+  auto isOwned = [&](long long g) { return owned.find(g) >= 0; };
   for (std::size_t s = 0; s < topology.pointSetNames.size(); ++s) {
     std::vector<long long>& ids = sets[topology.pointSetNames[s]];
     for (int i : topology.ownedPointSets[s]) ids.push_back(topology.overlapGlobalId[i]);
@@ -110,7 +108,7 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
       ids = readIds(in, spec.path, "node set file \"" + fileName + "\"", maxId, keep);
     }
     if (listed == 0) throw InputError(spec.path, "the node set is empty");
-    std::sort(ids.begin(), ids.end());
+    if (!std::is_sorted(ids.begin(), ids.end())) std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     sets[spec.name] = ids;
   }
@@ -119,14 +117,11 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
 
 std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,
                              const std::vector<long long>& ownedGlobalIds) {
-  std::unordered_map<long long, int> localOf;
-  localOf.reserve(ownedGlobalIds.size() * 2);
-  for (std::size_t i = 0; i < ownedGlobalIds.size(); ++i)
-    localOf[ownedGlobalIds[i]] = static_cast<int>(i);
+  const IdIndex localOf(ownedGlobalIds.data(), ownedGlobalIds.size());
   std::vector<int> out;
   for (long long g : setGlobalIds) {
-    auto it = localOf.find(g);
-    if (it != localOf.end()) out.push_back(it->second);
+    const int local = localOf.find(g);
+    if (local >= 0) out.push_back(local);
   }
   std::sort(out.begin(), out.end());
   return out;
