@@ -7,6 +7,7 @@
 
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
+#include "core/IdIndex.hpp"
 
 namespace peridot {
 
@@ -17,6 +18,18 @@ std::vector<int> displacements(const std::vector<int>& counts) {
   std::vector<int> d(counts.size(), 0);
   for (std::size_t r = 1; r < counts.size(); ++r) d[r] = d[r - 1] + counts[r - 1];
   return d;
+}
+
+// Indices 0 .. n-1 ordered by bucket(i) in [0, buckets), in index order within a bucket (a
+// counting sort: these orders are by rank, of which there are few).
+template <class Bucket>
+std::vector<int> bucketOrder(int n, int buckets, Bucket bucket) {
+  std::vector<int> start(static_cast<std::size_t>(buckets) + 1, 0);
+  for (int i = 0; i < n; ++i) ++start[bucket(i) + 1];
+  for (int b = 0; b < buckets; ++b) start[b + 1] += start[b];
+  std::vector<int> order(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) order[start[bucket(i)]++] = i;
+  return order;
 }
 
 std::vector<int> scaled(const std::vector<int>& v, int factor) {
@@ -80,11 +93,8 @@ OutputDistribution::OutputDistribution(const Topology& t)
   auto homeOf = [&](long long id) { return static_cast<int>(id / idsPerHome); };
 
   // Send (block, id) to the homes.
-  std::vector<int> toHome(n);
-  std::iota(toHome.begin(), toHome.end(), 0);
-  std::stable_sort(toHome.begin(), toHome.end(), [&](int a, int b) {
-    return homeOf(t.overlapGlobalId[a]) < homeOf(t.overlapGlobalId[b]);
-  });
+  const std::vector<int> toHome =
+      bucketOrder(n, P, [&](int i) { return homeOf(t.overlapGlobalId[i]); });
   std::vector<int> homeCounts(P, 0), fromCounts(P);
   std::vector<long long> pairs(2 * static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {
@@ -105,25 +115,30 @@ OutputDistribution::OutputDistribution(const Topology& t)
 
   // At the home: rank among the ids of the block, offset by the same block's points on the
   // homes before (which hold smaller ids) and by the blocks before.
-  std::vector<int> byKey(numHomed);
-  std::iota(byKey.begin(), byKey.end(), 0);
-  std::sort(byKey.begin(), byKey.end(), [&](int a, int b) {
-    return homed[2 * a] != homed[2 * b] ? homed[2 * a] < homed[2 * b]
-                                        : homed[2 * a + 1] < homed[2 * b + 1];
-  });
+  // The ids in ascending order (IdIndex: a table over the home's range of ids, which the homes'
+  // cut makes dense for a mesh numbered without large gaps, else a sort), each block counting
+  // its own. An index sort whose comparisons read the pairs at random took 0.2 s here at 2 * 10^6
+  // points.
   std::vector<long long> homeBlockCounts(numBlocks, 0), before(numBlocks, 0);
   for (int k = 0; k < numHomed; ++k) ++homeBlockCounts[homed[2 * k]];
   MPI_Exscan(homeBlockCounts.data(), before.data(), numBlocks, MPI_LONG_LONG, MPI_SUM, comm_);
   if (rank_ == 0) std::fill(before.begin(), before.end(), 0);  // Exscan leaves rank 0 undefined
   std::vector<long long> homedPosition(numHomed);
   std::string problem;
-  for (int k = 0; k < numHomed; ++k) {
-    const int j = byKey[k];
-    if (k > 0 && homed[2 * byKey[k - 1]] == homed[2 * j] &&
-        homed[2 * byKey[k - 1] + 1] == homed[2 * j + 1] && problem.empty())
-      problem = "output: global id " + std::to_string(homed[2 * j + 1]) + " is owned twice";
-    const auto b = static_cast<std::size_t>(homed[2 * j]);
-    homedPosition[j] = blockOffset[b] + before[b]++;
+  {
+    std::vector<long long> ids(static_cast<std::size_t>(numHomed));
+    for (int j = 0; j < numHomed; ++j) ids[j] = homed[2 * j + 1];
+    const IdIndex byId(ids.data(), ids.size());
+    ids = std::vector<long long>();
+    long long visited = 0;
+    byId.forEachInOrder([&](long long, int j) {
+      ++visited;
+      const auto b = static_cast<std::size_t>(homed[2 * j]);
+      homedPosition[j] = blockOffset[b] + before[b]++;
+    });
+    for (int j = 0; j < numHomed && visited != numHomed && problem.empty(); ++j)
+      if (byId.find(homed[2 * j + 1]) != j)
+        problem = "output: global id " + std::to_string(homed[2 * j + 1]) + " is owned twice";
   }
   throwIfAnyRank(problem, comm_, true);
   homed.clear();
@@ -151,10 +166,7 @@ OutputDistribution::OutputDistribution(const Topology& t)
   std::vector<int> dest(n);
   sendCounts_.assign(P, 0);
   for (int i = 0; i < n; ++i) ++sendCounts_[dest[i] = ownerOf(ownedPosition[i])];
-  sendOrder_.resize(n);
-  std::iota(sendOrder_.begin(), sendOrder_.end(), 0);
-  std::stable_sort(sendOrder_.begin(), sendOrder_.end(),
-                   [&](int a, int b) { return dest[a] < dest[b]; });
+  sendOrder_ = bucketOrder(n, P, [&](int i) { return dest[i]; });
   sendDispls_ = displacements(sendCounts_);
   recvCounts_.assign(P, 0);
   MPI_Alltoall(sendCounts_.data(), 1, MPI_INT, recvCounts_.data(), 1, MPI_INT, comm_);
@@ -253,10 +265,7 @@ std::vector<std::vector<long long>> OutputDistribution::setsInRange(
   // The owned points by id, to find a member's owned index: built for the call (at output
   // opening), not kept through the run.
   const std::size_t n = sendOrder_.size();
-  std::vector<int> byId(n);
-  std::iota(byId.begin(), byId.end(), 0);
-  std::sort(byId.begin(), byId.end(),
-            [&](int a, int b) { return overlapGlobalId_[a] < overlapGlobalId_[b]; });
+  const IdIndex byId(overlapGlobalId_.data(), n);
   // Flag each set's members (owned order), move the flags to the ranges, read the positions.
   std::vector<std::vector<long long>> positions(ownedSetIds.size());
   std::vector<long long> member(n), flags;
@@ -264,14 +273,12 @@ std::vector<std::vector<long long>> OutputDistribution::setsInRange(
     std::fill(member.begin(), member.end(), 0);
     std::string problem;
     for (long long id : *ownedSetIds[s]) {
-      auto it = std::lower_bound(byId.begin(), byId.end(), id, [&](int k, long long value) {
-        return overlapGlobalId_[k] < value;
-      });
-      if (it == byId.end() || overlapGlobalId_[*it] != id) {
+      const int local = byId.find(id);
+      if (local < 0) {
         problem = "output: node set member " + std::to_string(id) + " is not an owned point";
         break;
       }
-      member[*it] = 1;
+      member[local] = 1;
     }
     throwIfAnyRank(problem, comm_, true);
     move(member.data(), 1, MPI_LONG_LONG, flags);
