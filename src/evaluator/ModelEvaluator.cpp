@@ -430,6 +430,28 @@ void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {
+  if (bondBroken_ && !bondDamage_) {
+    // Broken-bond flags: whole numbers, which the double sums below add exactly in any order,
+    // so the counts are integers here and the pass vectorises (as a chain of double additions
+    // it took 0.26 s per output at 128^3, a quarter of a step).
+    const unsigned char* sides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
+    for (int i = 0; i < topology_.numOwned; ++i) {
+      const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];
+      std::int64_t broken = 0, count = b1 - b0;
+      if (sides) {
+        count = 0;
+        for (std::int64_t b = b0; b < b1; ++b) {
+          const int own = sides[b] & 1;
+          count += own;
+          broken += own * bondBroken_[b];
+        }
+      } else {
+        for (std::int64_t b = b0; b < b1; ++b) broken += bondBroken_[b];
+      }
+      damage[i] = count > 0 ? static_cast<double>(broken) / static_cast<double>(count) : 0.0;
+    }
+    return;
+  }
   for (int i = 0; i < topology_.numOwned; ++i) {
     const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];
     // Over the bonds within the point's own horizon (all of them unless horizons differ).

@@ -155,6 +155,31 @@ TEST(LeanBonds, CompactDamageRunMatchesFloatDamageBitForBit) {
   }
 }
 
+// Node damage where horizons differ (some bonds one-sided: only the owner's side counts): the
+// flags' integer counts give the float run's quotients to the bit.
+TEST(LeanBonds, CompactNodeDamageWithOneSidedBondsMatchesFloatDamage) {
+  peridot::testing::JitteredLattice compact(6, false, true, 5), full(6, false, true, 5);
+  compact.addBlock(pmb(), criticalStretch(0.01), "One", true, true, true);
+  full.addBlock(pmb(), criticalStretch(0.01), "One", true, true, false);
+  ASSERT_FALSE(compact.topology.bondSides.empty());  // the scene has one-sided bonds
+  ASSERT_TRUE(compact.evaluator->compactDamage());
+  ASSERT_FALSE(full.evaluator->compactDamage());
+  double total = 0;
+  for (int step = 1; step <= 4; ++step) {
+    for (auto* L : {&compact, &full}) {
+      const double* x = L->fields->node("Model_Coordinates", 3);
+      double* y = L->fields->node("Coordinates", 3);
+      for (int p = 0; p < L->topology.numOverlap; ++p) y[3 * p] = x[3 * p] * (1 + 0.004 * step);
+      L->evaluator->evaluate(1.0);
+    }
+    const std::vector<double> d = compact.nodeDamage();
+    EXPECT_TRUE(sameBits(d, full.nodeDamage())) << "step " << step;
+    total = 0;
+    for (double v : d) total += v;
+  }
+  EXPECT_GT(total, 0.0);  // bonds broke
+}
+
 // The loop's own |xi| against a stored array the test fills independently: the force with
 // state.bondLength set is the force without, to the bit.
 TEST(LeanBonds, ComputedBondLengthEqualsStoredBondLength) {
