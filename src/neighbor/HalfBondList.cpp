@@ -207,29 +207,38 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   MPI_Allreduce(MPI_IN_PLACE, &usable, 1, MPI_INT, MPI_MIN, t.comm);
   if (!usable) return false;
 
-  // The curve order of every point this rank sees.
-  std::vector<unsigned long long> key(static_cast<std::size_t>(numReal));
-  for (int k = 0; k < numReal; ++k)
-    key[k] = mortonKey(&t.referencePosition[3 * static_cast<std::size_t>(k)], t.curveLo, t.curveHi);
+  // The curve order of every point this rank sees, read where a ghost is compared (between
+  // owned points the local order is the curve order): without ghosts, no key.
+  std::vector<unsigned long long> key(t.numGhosts > 0 ? static_cast<std::size_t>(numReal) : 0);
+  for (std::size_t k = 0; k < key.size(); ++k)
+    key[k] = mortonKey(&t.referencePosition[3 * k], t.curveLo, t.curveHi);
   const auto before = [&](int a, int b) {
     return key[a] != key[b] ? key[a] < key[b] : t.overlapGlobalId[a] < t.overlapGlobalId[b];
   };
-  // Whether owned point i's neighbour j comes after it: between owned points the local order is
-  // the curve order (no key to read).
+  // Whether owned point i's neighbour j comes after it.
   const auto after = [&](int i, int j) { return j < n ? j > i : before(i, j); };
 
   // Pairs per owned row (its neighbours after it) and per ghost row (its owned neighbours after
   // it, found from their rows).
+  // (Here and below the arrays are read through local pointers and a row's count is kept in a
+  // register: through the vectors, a store -- of a count, or of a 1-byte slot that may alias
+  // anything -- made the next bond reload the row's bounds and the lists' addresses.)
+  const std::int64_t* offsets = t.bondOffsets.data();
+  const int* neighbors = t.neighbors.data();
   std::vector<std::int64_t> ownedCount(static_cast<std::size_t>(n), 0);
   std::vector<std::int64_t> ghostCount(static_cast<std::size_t>(t.numGhosts), 0);
-  for (int i = 0; i < n; ++i)
-    for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
-      const int j = t.neighbors[e];
+  for (int i = 0; i < n; ++i) {
+    std::int64_t count = 0;
+    const std::int64_t end = offsets[i + 1];
+    for (std::int64_t e = offsets[i]; e < end; ++e) {
+      const int j = neighbors[e];
       if (after(i, j))
-        ++ownedCount[i];
+        ++count;
       else if (j >= n)
         ++ghostCount[j - n];
     }
+    ownedCount[i] = count;
+  }
   // Rows: every owned point (local order is curve order), and the ghosts with pairs merged in.
   std::vector<int> ghosts;
   for (int g = 0; g < t.numGhosts; ++g)
@@ -269,23 +278,30 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   std::vector<std::int64_t> ownedRowStart(static_cast<std::size_t>(n));
   for (std::size_t r = 0; r < rows; ++r)
     if (list.rowPoint[r] < n) ownedRowStart[list.rowPoint[r]] = list.rowPairOffsets[r];
-  for (int i = 0; i < n; ++i)
-    for (std::int64_t e = t.bondOffsets[i]; e < t.bondOffsets[i + 1]; ++e) {
-      const int j = t.neighbors[e];
-      const auto slot = static_cast<int>(e - t.bondOffsets[i]);
+  int* pairPoint = list.pairPoint.data();
+  std::uint8_t* pairSlot = list.pairSlot.data();
+  std::uint8_t* pairSlotHigh = list.pairSlotHigh.data();
+  std::int64_t* ghostNext = ghostRowStart.data();
+  for (int i = 0; i < n; ++i) {
+    std::int64_t next = ownedRowStart[i];
+    const std::int64_t begin = offsets[i], end = offsets[i + 1];
+    for (std::int64_t e = begin; e < end; ++e) {
+      const int j = neighbors[e];
+      const auto slot = static_cast<int>(e - begin);
       std::int64_t p;
       if (after(i, j)) {
-        p = ownedRowStart[i]++;
-        list.pairPoint[p] = j;
+        p = next++;
+        pairPoint[p] = j;
       } else if (j >= n) {
-        p = ghostRowStart[j - n]++;
-        list.pairPoint[p] = i;
+        p = ghostNext[j - n]++;
+        pairPoint[p] = i;
       } else {
         continue;
       }
-      list.pairSlot[p] = static_cast<std::uint8_t>(slot & 0xff);
-      if (wide) list.pairSlotHigh[p] = static_cast<std::uint8_t>(slot >> 8);
+      pairSlot[p] = static_cast<std::uint8_t>(slot & 0xff);
+      if (wide) pairSlotHigh[p] = static_cast<std::uint8_t>(slot >> 8);
     }
+  }
 
   return true;
 }
