@@ -271,9 +271,11 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
   f_ = fields_->node("Force_Density", 3);
   fieldsTimer.reset();
 
-  std::vector<long long> ownedIds(topology_.overlapGlobalId.begin(),
-                                  topology_.overlapGlobalId.begin() + topology_.numOwned);
-  for (const auto& kv : nodeSetIds_) nodeSets_[kv.first] = ownedPoints(kv.second, ownedIds);
+  {
+    const IdIndex owned(topology_.overlapGlobalId.data(),
+                        static_cast<std::size_t>(topology_.numOwned));
+    for (const auto& kv : nodeSetIds_) nodeSets_[kv.first] = ownedPoints(kv.second, owned);
+  }
   std::vector<long long> setSizes;  // over all ranks, in the map's (name) order
   for (const auto& kv : nodeSetIds_) setSizes.push_back(static_cast<long long>(kv.second.size()));
   MPI_Allreduce(MPI_IN_PLACE, setSizes.data(), static_cast<int>(setSizes.size()), MPI_LONG_LONG,

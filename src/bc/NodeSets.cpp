@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "core/Error.hpp"
-#include "core/IdIndex.hpp"
 #include "core/InputFile.hpp"
 
 namespace peridot {
@@ -115,12 +114,10 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
   return sets;
 }
 
-std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,
-                             const std::vector<long long>& ownedGlobalIds) {
-  const IdIndex localOf(ownedGlobalIds.data(), ownedGlobalIds.size());
+std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds, const IdIndex& owned) {
   std::vector<int> out;
   for (long long g : setGlobalIds) {
-    const int local = localOf.find(g);
+    const int local = owned.find(g);
     if (local >= 0) out.push_back(local);
   }
   std::sort(out.begin(), out.end());

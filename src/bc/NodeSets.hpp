@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/IdIndex.hpp"
 #include "deck/RunConfig.hpp"
 #include "parallel/Topology.hpp"
 
@@ -16,8 +17,8 @@ namespace peridot {
 std::map<std::string, std::vector<long long>> collectNodeSets(
     const Topology& topology, const std::vector<NodeSetSpec>& specs);
 
-// Owned local indices of a set's points, given the owned global ids (local index = position).
-std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds,
-                             const std::vector<long long>& ownedGlobalIds);
+// Owned local indices of a set's points, sorted, given the owned points indexed by global id
+// (built once for all the sets).
+std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds, const IdIndex& owned);
 
 }  // namespace peridot

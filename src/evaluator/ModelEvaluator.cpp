@@ -460,7 +460,6 @@ void ModelEvaluator::nodeDamage(double* damage) const {
       if (!topology_.ownSide(b)) continue;
       count += 1;
       if (bondDamage_) broken += bondDamage_[b];
-      if (bondBroken_) broken += bondBroken_[b];
     }
     damage[i] = count > 0 ? broken / count : 0.0;
   }
