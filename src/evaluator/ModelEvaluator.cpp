@@ -405,10 +405,12 @@ void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {
     snapshot.bondDamage = fields_.bondFloat("Bond_Damage");
   else
     snapshot.bondDamage.clear();
-  if (state_.bondBroken)
-    snapshot.bondBroken = fields_.bondByte("Bond_Broken");
-  else
+  if (state_.bondBroken) {
+    const auto& broken = fields_.bondByte("Bond_Broken");
+    snapshot.bondBroken.assign(broken.begin(), broken.end());
+  } else {
     snapshot.bondBroken.clear();
+  }
   snapshot.materials.resize(blocks_.size());
   for (std::size_t k = 0; k < blocks_.size(); ++k)
     blocks_[k].material->saveDamageState(snapshot.materials[k]);

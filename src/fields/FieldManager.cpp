@@ -89,12 +89,11 @@ std::vector<float>& FieldManager::bondFloat(const std::string& name, float initi
       .first->second;
 }
 
-std::vector<unsigned char>& FieldManager::bondByte(const std::string& name, unsigned char initial) {
+ZeroedArray<unsigned char>& FieldManager::bondByte(const std::string& name) {
   auto it = byteBondFields_.find(name);
   if (it != byteBondFields_.end()) return it->second;
   return byteBondFields_
-      .emplace(name,
-               std::vector<unsigned char>(static_cast<std::size_t>(topology_.numBonds()), initial))
+      .emplace(name, ZeroedArray<unsigned char>(static_cast<std::size_t>(topology_.numBonds())))
       .first->second;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ZeroedArray.hpp"
 #include "fields/PointValues.hpp"
 #include "parallel/Topology.hpp"
 
@@ -49,9 +50,11 @@ class FieldManager {
   std::vector<double>& bond(const std::string& name, double initial = 0.0);
   // Single precision, for bond state that needs no more (bond damage).
   std::vector<float>& bondFloat(const std::string& name, float initial = 0.0f);
-  // One byte, for flags (compact bond damage: 1 = broken). Not saved by checkpoints: a run with
-  // a checkpoint keeps float damage (ModelEvaluator::setCompactDamageAllowed).
-  std::vector<unsigned char>& bondByte(const std::string& name, unsigned char initial = 0);
+  // One byte, for flags (compact bond damage: 1 = broken), all 0 at first. Not saved by
+  // checkpoints: a run with a checkpoint keeps float damage
+  // (ModelEvaluator::setCompactDamageAllowed). Its pages are not written until a flag in them is
+  // set (core/ZeroedArray.hpp).
+  ZeroedArray<unsigned char>& bondByte(const std::string& name);
 
   // Names of the bond fields allocated so far (double, then float), e.g. for a checkpoint.
   std::vector<std::string> bondFieldNames() const;
@@ -65,7 +68,7 @@ class FieldManager {
   std::map<std::string, NodeField> nodeFields_;
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, std::vector<float>> floatBondFields_;
-  std::map<std::string, std::vector<unsigned char>> byteBondFields_;
+  std::map<std::string, ZeroedArray<unsigned char>> byteBondFields_;
   std::set<std::string> positionFields_, currentPositionFields_;
   bool deformedBox_ = false;
   double boxF_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
