@@ -129,12 +129,15 @@ enum LengthSource : int { kComputedLength, kPairLength, kTabledLength };
 
 struct PairLengths {
   const double* perPair;
-  const std::uint16_t* index;
+  const std::uint8_t* index;      // the low byte
+  const std::uint8_t* indexHigh;  // null where the table has at most 256 entries
   const double* table;
 };
 
 inline PairLengths pairLengths(const HalfBondList& h) {
-  return {h.pairLength.data(), h.pairLengthIndex.data(), h.lengthTable.data()};
+  return {h.pairLength.data(), h.pairLengthIndex.data(),
+          h.pairLengthIndexHigh.empty() ? nullptr : h.pairLengthIndexHigh.data(),
+          h.lengthTable.data()};
 }
 
 // The |xi| of a row's pairs p0 .. p0 + lanes as one contiguous array (index k for pair p0 + k),
@@ -146,9 +149,15 @@ inline const double* rowLengths(const PairLengths& l, std::int64_t p0, int lanes
   if constexpr (kSource == kPairLength) {
     return l.perPair + p0;
   } else if constexpr (kSource == kTabledLength) {
-    const std::uint16_t* index = l.index + p0;
+    const std::uint8_t* index = l.index + p0;
+    if (l.indexHigh) {
+      const std::uint8_t* high = l.indexHigh + p0;
 #pragma GCC unroll 4
-    for (int k = 0; k < lanes; ++k) buffer[k] = l.table[index[k]];
+      for (int k = 0; k < lanes; ++k) buffer[k] = l.table[index[k] | high[k] << 8];
+    } else {
+#pragma GCC unroll 4
+      for (int k = 0; k < lanes; ++k) buffer[k] = l.table[index[k]];
+    }
     return buffer;
   } else {
     return nullptr;

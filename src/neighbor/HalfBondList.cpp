@@ -29,6 +29,7 @@ void permuteRow(HalfBondList& h, std::int64_t p0, const std::vector<int>& order)
   permute(h.pairSlotHigh, p0, order);
   permute(h.pairLength, p0, order);
   permute(h.pairLengthIndex, p0, order);
+  permute(h.pairLengthIndexHigh, p0, order);
   permute(h.pairDamage, p0, order);
   permute(h.pairInfluence, p0, order);
 }
@@ -39,7 +40,7 @@ std::size_t HalfBondList::bytes() const {
   return rowPoint.size() * sizeof(int) + rowIntact.size() * sizeof(int) +
          rowPairOffsets.size() * sizeof(std::int64_t) + pairPoint.size() * sizeof(int) +
          pairSlot.size() + pairSlotHigh.size() + pairLength.size() * sizeof(double) +
-         pairLengthIndex.size() * sizeof(std::uint16_t) + lengthTable.size() * sizeof(double) +
+         pairLengthIndex.size() + pairLengthIndexHigh.size() + lengthTable.size() * sizeof(double) +
          pairDamage.size() * sizeof(float) + pairInfluence.size() * sizeof(double);
 }
 
@@ -134,6 +135,7 @@ void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke
   compact(pairSlotHigh);
   compact(pairLength);
   compact(pairLengthIndex);
+  compact(pairLengthIndexHigh);
   compact(pairDamage);
   compact(pairInfluence);
   rowIntact[r] = intact;
@@ -149,6 +151,7 @@ void HalfBondList::gatherInfluence(const Topology& t, const double* influence) {
 void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
   const auto entries = static_cast<std::size_t>(numPairs() + kPadding);
   pairLength = std::vector<double>();
+  pairLengthIndexHigh = std::vector<std::uint8_t>();
   // The table first; entry 0 is the padding's 1. The values are found by an open-addressed
   // hash of their bits, at least twice the limit in size (a lookup per pair: it must cost little
   // beside the square root).
@@ -180,16 +183,35 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
       if (bits(lengthTable[static_cast<std::size_t>(slot[h])]) == b) return slot[h];
     }
   };
+  // A row's lengths first, in a pass the compiler vectorises (the square roots), then their
+  // lookups.
+  std::int64_t longest = 0;
+  for (std::size_t r = 0; r < rowPoint.size(); ++r)
+    longest = std::max(longest, rowPairOffsets[r + 1] - rowPairOffsets[r]);
+  std::vector<double> row(static_cast<std::size_t>(longest));
   bool fits = true;
-  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r)
-    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1] && fits; ++p) {
-      const std::int64_t k = indexOf(referenceBondLength(x, rowPoint[r], pairPoint[p]));
-      fits = k >= 0;
-      pairLengthIndex[p] = static_cast<std::uint16_t>(k);
+  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r) {
+    const std::int64_t p0 = rowPairOffsets[r];
+    const int m = static_cast<int>(rowPairOffsets[r + 1] - p0);
+    const double* xa = x + 3 * rowPoint[r];
+    const int* b = pairPoint.data() + p0;
+    for (int k = 0; k < m; ++k) {
+      const double* xb = x + 3 * b[k];
+      row[k] = std::sqrt(sumOfSquares(xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]));
     }
+    for (int k = 0; k < m && fits; ++k) {
+      const std::int64_t index = indexOf(row[k]);
+      fits = index >= 0;
+      pairLengthIndex[p0 + k] = static_cast<std::uint8_t>(index);
+      if (index > 255 && pairLengthIndexHigh.empty()) pairLengthIndexHigh.assign(entries, 0);
+      if (!pairLengthIndexHigh.empty())
+        pairLengthIndexHigh[p0 + k] = static_cast<std::uint8_t>(index >> 8);
+    }
+  }
   if (fits) return;
   // Too many distinct lengths (an irregular mesh): one double per pair.
-  pairLengthIndex = std::vector<std::uint16_t>();
+  pairLengthIndex = std::vector<std::uint8_t>();
+  pairLengthIndexHigh = std::vector<std::uint8_t>();
   lengthTable = std::vector<double>();
   pairLength.assign(entries, 1.0);
   for (std::size_t r = 0; r < rowPoint.size(); ++r)

@@ -49,12 +49,19 @@ struct HalfBondList {
   }
   // Per pair |xi|, where the run stores it (else the loops compute it, the same bits): as an
   // index into lengthTable, the rank's distinct values, when there are at most
-  // kLengthTableLimit of them (a lattice has a few hundred: 2 bytes a pair instead of 8, and the
-  // table stays in cache), else in pairLength. The unused form is empty.
+  // kLengthTableLimit of them (a lattice has a few hundred, and the table stays in cache), else
+  // in pairLength. The index in bytes as the slot: the low byte, and the high byte only where
+  // the table has more than 256 entries (231 at 128^3 on one rank: 1 byte a pair instead of 8;
+  // 345 at 216^3: 2 bytes). The unused forms are empty.
   static constexpr std::size_t kLengthTableLimit = 65536;
-  std::vector<std::uint16_t> pairLengthIndex;
+  std::vector<std::uint8_t> pairLengthIndex;
+  std::vector<std::uint8_t> pairLengthIndexHigh;
   std::vector<double> lengthTable;
   std::vector<double> pairLength;
+  int lengthIndex(std::int64_t p) const {
+    return pairLengthIndexHigh.empty() ? int{pairLengthIndex[p]}
+                                       : int{pairLengthIndex[p]} | int{pairLengthIndexHigh[p]} << 8;
+  }
   // Per pair, only where some bond on this rank is partly damaged (0 < d < 1): a copy of its
   // damage. Empty where every bond is intact or broken (the critical stretch's damage): the
   // intact pairs are the first rowIntact of each row, and the loops read no damage.

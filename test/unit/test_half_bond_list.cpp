@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -219,15 +220,19 @@ TEST(HalfBondList, LengthsTabledPerPairOrComputedGiveTheSameBits) {
       ASSERT_FALSE(table.pairLengthIndex.empty());
       EXPECT_TRUE(table.pairLength.empty());
       EXPECT_GT(table.lengthTable.size(), static_cast<std::size_t>(table.numPairs() / 2));
+      // More than 256 of them: the index's high byte is kept.
+      ASSERT_GT(table.lengthTable.size(), 256u);
+      EXPECT_EQ(table.pairLengthIndexHigh.size(), table.pairLengthIndex.size());
       pairs.storeLengths(x, 1);
       ASSERT_TRUE(pairs.pairLengthIndex.empty());
       ASSERT_EQ(pairs.pairLength.size(),
                 static_cast<std::size_t>(pairs.numPairs() + HalfBondList::kPadding));
       none.pairLengthIndex.clear();
+      none.pairLengthIndexHigh.clear();
       none.lengthTable.clear();
       ASSERT_FALSE(none.storesLengths());
       for (std::int64_t p = 0; p < table.numPairs(); ++p)
-        ASSERT_EQ(table.lengthTable[table.pairLengthIndex[p]], pairs.pairLength[p]) << p;
+        ASSERT_EQ(table.lengthTable[table.lengthIndex(p)], pairs.pairLength[p]) << p;
       double broken = 0;
       for (int step = 0; step <= 6; ++step) {
         for (JitteredLattice* L : {&tabled, &perPair, &computed}) {
@@ -247,6 +252,38 @@ TEST(HalfBondList, LengthsTabledPerPairOrComputedGiveTheSameBits) {
 
 // LPS over the half list (omega = 1/zeta) is the gradient of LPS's stored energy, which is summed
 // over the full lists: V_k f_k = -dE/dy_k with E = sum V_i W_i, by central differences.
+// The table index in one byte while the table has at most 256 entries, with a second byte from
+// the first pair past that on: every pair still finds its own |xi|.
+TEST(HalfBondList, LengthIndexInOneByteUnlessTheTableOutgrowsIt) {
+  for (const int distinct : {200, 255, 256, 700}) {
+    SCOPED_TRACE(std::to_string(distinct) + " distinct lengths");
+    // Points on the x axis (point k at x = 0.37 k^1.5): row 0 pairs point 0 with points
+    // 1 .. distinct (that many lengths, all different); a second row, of point n = -x_1, pairs
+    // it with point 0 at a length row 0 has. The table: those lengths and the padding's 1.
+    const int n = distinct + 1;
+    std::vector<double> x(3 * static_cast<std::size_t>(n + 1), 0.0);
+    for (int k = 0; k < n; ++k) x[3 * k] = 0.37 * std::pow(k, 1.5);
+    x[3 * n] = -x[3];  // point n, the mirror of point 1 about point 0
+    HalfBondList h;
+    h.rowPoint = {0, n};
+    h.rowPairOffsets = {0, n - 1, n};
+    for (int b = 1; b < n; ++b) h.pairPoint.push_back(b);
+    h.pairPoint.push_back(0);  // row n: point 0, at the distance of point 1
+    h.pairPoint.resize(h.pairPoint.size() + HalfBondList::kPadding, 0);
+    h.storeLengths(x.data());
+    ASSERT_FALSE(h.pairLengthIndex.empty());
+    ASSERT_EQ(h.lengthTable.size(), static_cast<std::size_t>(distinct) + 1);
+    EXPECT_EQ(h.pairLengthIndexHigh.empty(), distinct < 256);
+    for (std::size_t r = 0; r < 2; ++r)
+      for (std::int64_t p = h.rowPairOffsets[r]; p < h.rowPairOffsets[r + 1]; ++p)
+        ASSERT_EQ(h.lengthTable[h.lengthIndex(p)],
+                  std::fabs(x[3 * h.pairPoint[p]] - x[3 * h.rowPoint[r]]))
+            << p;
+    for (std::int64_t p = h.numPairs(); p < h.numPairs() + HalfBondList::kPadding; ++p)
+      EXPECT_EQ(h.lengthTable[h.lengthIndex(p)], 1.0);
+  }
+}
+
 TEST(HalfBondList, LpsForceIsMinusTheGradientOfTheStoredEnergy) {
   JitteredLattice L(5, false, false, 4);
   L.addBlock(peridot::testing::material("Elastic", "", 2.0, 0.3), nullptr, "1.0/zeta", true);
@@ -394,6 +431,7 @@ TEST(HalfBondList, BrokenPairsLeaveTheLoopsWithoutChangingABit) {
     EXPECT_EQ(h.pairSlot, built.pairSlot);
     EXPECT_EQ(h.pairLength, built.pairLength);
     EXPECT_EQ(h.pairLengthIndex, built.pairLengthIndex);
+    EXPECT_EQ(h.pairLengthIndexHigh, built.pairLengthIndexHigh);
     EXPECT_EQ(h.pairInfluence, built.pairInfluence);
     EXPECT_EQ(h.rowIntact, built.rowIntact);
     for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
