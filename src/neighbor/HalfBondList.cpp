@@ -183,31 +183,16 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
       if (bits(lengthTable[static_cast<std::size_t>(slot[h])]) == b) return slot[h];
     }
   };
-  // A row's lengths first, in a pass the compiler vectorises (the square roots), then their
-  // lookups.
-  std::int64_t longest = 0;
-  for (std::size_t r = 0; r < rowPoint.size(); ++r)
-    longest = std::max(longest, rowPairOffsets[r + 1] - rowPairOffsets[r]);
-  std::vector<double> row(static_cast<std::size_t>(longest));
   bool fits = true;
-  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r) {
-    const std::int64_t p0 = rowPairOffsets[r];
-    const int m = static_cast<int>(rowPairOffsets[r + 1] - p0);
-    const double* xa = x + 3 * rowPoint[r];
-    const int* b = pairPoint.data() + p0;
-    for (int k = 0; k < m; ++k) {
-      const double* xb = x + 3 * b[k];
-      row[k] = std::sqrt(sumOfSquares(xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]));
-    }
-    for (int k = 0; k < m && fits; ++k) {
-      const std::int64_t index = indexOf(row[k]);
+  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r)
+    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1] && fits; ++p) {
+      const std::int64_t index = indexOf(referenceBondLength(x, rowPoint[r], pairPoint[p]));
       fits = index >= 0;
-      pairLengthIndex[p0 + k] = static_cast<std::uint8_t>(index);
+      pairLengthIndex[p] = static_cast<std::uint8_t>(index);
       if (index > 255 && pairLengthIndexHigh.empty()) pairLengthIndexHigh.assign(entries, 0);
       if (!pairLengthIndexHigh.empty())
-        pairLengthIndexHigh[p0 + k] = static_cast<std::uint8_t>(index >> 8);
+        pairLengthIndexHigh[p] = static_cast<std::uint8_t>(index >> 8);
     }
-  }
   if (fits) return;
   // Too many distinct lengths (an irregular mesh): one double per pair.
   pairLengthIndex = std::vector<std::uint8_t>();
