@@ -4,8 +4,8 @@
 // until first written. An array of flags that a run writes in few places (the broken bonds of a
 // fracture run) then occupies only the pages its writes reach, where a std::vector would write
 // every byte up front. That first write of every page is what set-up pays for memory: on the
-// test machine, beyond the first 2 GB a process touches, about 13 us per 4 KiB page, so the
-// 249 MB of a 128^3 run's broken-bond flags cost ~0.8 s to zero (bench/RESULTS.md).
+// test machine, beyond the first ~1.3-2.1 GB a process touches, about 13 us per 4 KiB page, so
+// zeroing the 249 MB of a 128^3 run's broken-bond flags could cost ~0.8 s (bench/RESULTS.md).
 #include <cstddef>
 #include <cstdlib>
 #include <new>
