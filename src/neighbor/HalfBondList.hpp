@@ -44,9 +44,7 @@ struct HalfBondList {
   // byte a pair instead of two, 124 MB of a 128^3 run on one rank.
   std::vector<std::uint8_t> pairSlot;
   std::vector<std::uint8_t> pairSlotHigh;
-  int slot(std::int64_t p) const {
-    return pairSlotHigh.empty() ? int{pairSlot[p]} : int{pairSlot[p]} | int{pairSlotHigh[p]} << 8;
-  }
+  int slot(std::int64_t p) const { return joinBytes(pairSlot, pairSlotHigh, p); }
   // Per pair |xi|, where the run stores it (else the loops compute it, the same bits): as an
   // index into lengthTable, the rank's distinct values, when there are at most
   // kLengthTableLimit of them (a lattice has a few hundred, and the table stays in cache), else
@@ -59,8 +57,7 @@ struct HalfBondList {
   std::vector<double> lengthTable;
   std::vector<double> pairLength;
   int lengthIndex(std::int64_t p) const {
-    return pairLengthIndexHigh.empty() ? int{pairLengthIndex[p]}
-                                       : int{pairLengthIndex[p]} | int{pairLengthIndexHigh[p]} << 8;
+    return joinBytes(pairLengthIndex, pairLengthIndexHigh, p);
   }
   // Per pair, only where some bond on this rank is partly damaged (0 < d < 1): a copy of its
   // damage. Empty where every bond is intact or broken (the critical stretch's damage): the
@@ -78,6 +75,12 @@ struct HalfBondList {
   // partitioned again when a pass breaks some of its pairs (breakPairs), and put back in its order
   // when the damage is read anew (gatherDamage: a restored trial may mend bonds).
   std::vector<int> rowIntact;
+
+  // An index kept as a low byte per pair and a high byte only where one is needed (empty).
+  static int joinBytes(const std::vector<std::uint8_t>& low, const std::vector<std::uint8_t>& high,
+                       std::int64_t p) {
+    return high.empty() ? int{low[p]} : int{low[p]} | int{high[p]} << 8;
+  }
 
   std::int64_t numPairs() const { return rowPairOffsets.empty() ? 0 : rowPairOffsets.back(); }
   // The most pairs of any row (a row's vector pass buffers that many).
