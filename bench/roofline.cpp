@@ -13,62 +13,27 @@
 #include <memory>
 #include <vector>
 
-#include "damage/DamageModel.hpp"
-#include "evaluator/ModelEvaluator.hpp"
+#include "LatticeScene.hpp"
 #include "neighbor/HalfBondList.hpp"
 
 using namespace peridot;
 
 namespace {
 
-struct Scene {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
-  explicit Scene(int n) {
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
-          cloud.volume.push_back(1.0);
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
-        }
-    cloud.blockNames[1] = "block_1";
-    std::vector<double> h(cloud.size(), 3.015);
-    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
-    for (int p = 0; p < topology.numOverlap; ++p) {
-      for (int d = 0; d < 3; ++d)
-        x[3 * p + d] = y[3 * p + d] = topology.referencePosition[3 * p + d] * (1 + 1e-4 * d);
-      v[p] = 1.0;
-      hz[p] = 3.015;
-    }
+// The lattice stretched 1e-4 and 2e-4 along y and z in its reference (no strain), PMB with a
+// critical stretch that no bond reaches.
+struct Scene : bench::LatticeScene {
+  explicit Scene(int n) : LatticeScene(n) {
+    for (int p = 0; p < topology.numOverlap; ++p)
+      for (int d = 0; d < 3; ++d) x[3 * p + d] = y[3 * p + d] = x[3 * p + d] * (1 + 1e-4 * d);
     Teuchos::ParameterList m;
     m.set("Material Model", "Elastic Bond Based");
     m.set("Density", 1.0);
     m.set("Bulk Modulus", 1.0);
-    ListReader mr(m, "Materials -> M");
     Teuchos::ParameterList d;
     d.set("Damage Model", "Critical Stretch");
     d.set("Critical Stretch", 0.5);
-    ListReader dr(d, "Damage Models -> D");
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = createMaterial(mr);
-    b.damage = createDamageModel(dr);
-    for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    setBlock(m, &d, "One");
     evaluator->setHalfBondListAllowed(
         false);  // the full lists' loops; the half list is built apart
     evaluator->initialize();

@@ -14,6 +14,7 @@
 #include <ctime>
 #include <vector>
 
+#include "LatticeScene.hpp"
 #include "neighbor/NeighborSearch.hpp"
 #include "parallel/Topology.hpp"
 
@@ -38,17 +39,8 @@ int main(int argc, char** argv) {
   for (int n : {22, 47, 100, 128}) {  // 1.06e4, 1.04e5, 1e6, 2.1e6 points
     if (static_cast<double>(n) * n * n > maxPoints) break;
     if (static_cast<double>(n) * n * n < minPoints) continue;
-    PointCloud cloud;
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
-          cloud.volume.push_back(1.0);
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
-        }
-    cloud.blockNames[1] = "block_1";
-    std::vector<double> horizon(cloud.size(), 3.015);
+    PointCloud cloud = bench::unitLattice(n);
+    std::vector<double> horizon(cloud.size(), bench::kLatticeHorizon);
     std::vector<std::size_t> queries(cloud.size());
     for (std::size_t q = 0; q < queries.size(); ++q) queries[q] = q;
     NeighborSearchInput in;
