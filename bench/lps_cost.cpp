@@ -18,65 +18,30 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
-#include "damage/DamageModel.hpp"
-#include "evaluator/ModelEvaluator.hpp"
+#include "LatticeScene.hpp"
 
 using namespace peridot;
 
 namespace {
 
-struct Scene {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
-  Scene(int n, const std::string& model, const std::string& influence) {
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
-          cloud.volume.push_back(1.0);
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
-        }
-    cloud.blockNames[1] = "block_1";
-    std::vector<double> h(cloud.size(), 3.015);
-    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
+// The lattice stretched 1e-4 anisotropically; one block of `model` with critical stretch.
+struct Scene : bench::LatticeScene {
+  Scene(int n, const std::string& model, const std::string& influence) : LatticeScene(n) {
     for (int p = 0; p < topology.numOverlap; ++p) {
-      for (int d = 0; d < 3; ++d) x[3 * p + d] = topology.referencePosition[3 * p + d];
       y[3 * p] = x[3 * p] * (1 + 1e-4);
       y[3 * p + 1] = x[3 * p + 1] * (1 - 0.5e-4);
-      y[3 * p + 2] = x[3 * p + 2];
-      v[p] = 1.0;
-      hz[p] = 3.015;
     }
     Teuchos::ParameterList m;
     m.set("Material Model", model);
     m.set("Density", 1.0);
     m.set("Bulk Modulus", 5.0 / 3.0);
     if (model == "Elastic") m.set("Shear Modulus", 1.0);
-    ListReader mr(m, "Materials -> M");
     Teuchos::ParameterList d;
     d.set("Damage Model", "Critical Stretch");
     d.set("Critical Stretch", 0.01);
-    ListReader dr(d, "Damage Models -> D");
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = createMaterial(mr);
-    b.damage = createDamageModel(dr);
-    for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, influence, timers);
+    setBlock(m, &d, influence);
     evaluator->initialize();
   }
 };
@@ -142,13 +107,21 @@ int main(int argc, char** argv) {
       Scene& s = *cases[k].scene;
       Block& b = s.blocks[0];
       ModelState st = s.evaluator->state();
-      float* damage = const_cast<float*>(st.bondDamage);
+      st.halfBonds = s.evaluator->halfBondList();  // evaluate() sets it for its loops only
+      // The separate damage pass writes float damage; where the evaluator keeps broken-bond
+      // flags instead (compact damage, the usual case) it is timed on a buffer of its own.
+      std::vector<float> floatDamage(st.bondDamage ? 0 : s.topology.neighbors.size(), 0.0f);
+      float* damage = st.bondDamage ? const_cast<float*>(st.bondDamage) : floatDamage.data();
       // The dilatation pass as the evaluator runs it: with the critical stretch when it is fused
-      // there (Elastic::breaksInPrecompute), else after the separate damage pass.
+      // there (Elastic::breaksInPrecompute), in the damage form the evaluator keeps; else after
+      // the separate damage pass.
       ModelState pre = st;
       const bool fused = b.material->breaksInPrecompute();
       if (fused) {
-        pre.breakableBondDamage = damage;
+        if (st.bondDamage)
+          pre.breakableBondDamage = damage;
+        else
+          pre.breakableBondBroken = const_cast<unsigned char*>(st.bondBroken);
         pre.fusedCriticalStretch = b.damage->fusableCriticalStretch();
       }
       std::vector<double> tDamage, tPre, tForce;

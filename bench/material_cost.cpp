@@ -17,49 +17,23 @@
 #include <memory>
 #include <string>
 
-#include "evaluator/ModelEvaluator.hpp"
+#include "LatticeScene.hpp"
 
 using namespace peridot;
 
 namespace {
 
-struct Scene {
-  PointCloud cloud;
-  Topology topology;
-  std::unique_ptr<FieldManager> fields;
-  std::vector<Block> blocks;
-  Timers timers;
-  std::unique_ptr<ModelEvaluator> evaluator;
-
-  Scene(int n, const std::string& model, const std::string& integration) {
+// The lattice stretched anisotropically, moving with the velocity of that stretch.
+struct Scene : bench::LatticeScene {
+  Scene(int n, const std::string& model, const std::string& integration) : LatticeScene(n) {
     const bool bondAssociatedHardening =
         model == "Isotropic Hardening Bond Associated Correspondence";
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          cloud.x.insert(cloud.x.end(), {double(i), double(j), double(k)});
-          cloud.volume.push_back(1.0);
-          cloud.blockId.push_back(1);
-          cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
-        }
-    cloud.blockNames[1] = "block_1";
-    std::vector<double> h(cloud.size(), 3.015);
-    topology = buildTopology(cloud, h, TopologyOptions{}, MPI_COMM_SELF);
-    fields = std::make_unique<FieldManager>(topology);
-    double* x = fields->node("Model_Coordinates", 3);
-    double* y = fields->node("Coordinates", 3);
-    double* v = fields->node("Volume", 1);
-    double* hz = fields->node("Horizon", 1);
     double* vel = fields->node("Velocity", 3);
     for (int p = 0; p < topology.numOverlap; ++p) {
-      for (int d = 0; d < 3; ++d) x[3 * p + d] = topology.referencePosition[3 * p + d];
       y[3 * p] = x[3 * p] * (1 + 1e-4);
       y[3 * p + 1] = x[3 * p + 1] * (1 - 0.5e-4);
-      y[3 * p + 2] = x[3 * p + 2];
       vel[3 * p] = 1e-4 * x[3 * p];
       vel[3 * p + 1] = -0.5e-4 * x[3 * p + 1];
-      v[p] = 1.0;
-      hz[p] = 3.015;
     }
     Teuchos::ParameterList m;
     m.set("Material Model", model);
@@ -93,7 +67,7 @@ struct Scene {
     }
     if (model.find("Hypoelastic") != std::string::npos) {
       // Peridigm's hypoelastic family: `integration` carries the gradient order here.
-      m.set("Actual Horizon", 3.015);
+      m.set("Actual Horizon", bench::kLatticeHorizon);
       m.set("Gradient Order Of Accuracy", integration.empty() ? 1 : std::stoi(integration));
       if (model == "Isotropic Hardening Hypoelastic Correspondence") {
         m.set("Hardening Characteristic Strain", 1e-6);
@@ -109,14 +83,7 @@ struct Scene {
       m.set("lambda_i", 0.5);
       m.set("tau b", 10.0);
     }
-    ListReader mr(m, "Materials -> M");
-    Block b;
-    b.name = "block_1";
-    b.id = 1;
-    b.material = createMaterial(mr);
-    for (int p = 0; p < topology.numOwned; ++p) b.points.push_back(p);
-    blocks.push_back(b);
-    evaluator = std::make_unique<ModelEvaluator>(topology, *fields, blocks, "One", timers);
+    setBlock(m, nullptr, "One");
     evaluator->initialize();
   }
 };
@@ -131,6 +98,7 @@ void Evaluate(benchmark::State& state, const std::string& model,
   if (!s) s = std::make_unique<Scene>(n, model, integration);
   ModelState st = s->evaluator->state();
   st.dt = 1.0;
+  st.halfBonds = s->evaluator->halfBondList();  // evaluate() sets it for its loops only
   Block& b = s->blocks[0];
   for (auto _ : state) {
     b.material->precompute(st, b.points);
