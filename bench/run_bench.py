@@ -361,6 +361,8 @@ def parse_lammps(log):
 
 
 def one_run(code, scene, ranks, d, a, tag):
+    if a.settle > 0:
+        time.sleep(a.settle)
     if a.wait_quiet > 0:
         wait_until_quiet(a.wait_quiet)
     if code == "peridot":
@@ -538,6 +540,11 @@ def main():
     ap.add_argument("--wait-quiet", type=int, default=120,
                     help="before each run wait up to this many seconds for the box to be idle "
                          "(other users' jobs); 0 = do not wait")
+    ap.add_argument("--settle", type=float, default=0,
+                    help="sleep this many seconds before each run. On a VM whose host takes back "
+                         "freed guest memory within seconds (bench/RESULTS.md), a run started "
+                         "right after another gets part of its fresh pages several times cheaper: "
+                         "30 s makes every run start alike (cold)")
     ap.add_argument("--max-foreign", type=float, default=0.25,
                     help="rerun (once) a run during which other processes used more than this "
                          "fraction of a core")
