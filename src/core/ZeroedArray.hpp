@@ -1,11 +1,13 @@
 #pragma once
 // A fixed-size array that starts all zeros without writing them. Its storage comes from calloc,
 // which for a large block maps fresh pages from the kernel: they read as zeros and cost nothing
-// until first written. An array of flags that a run writes in few places (the broken bonds of a
-// fracture run) then occupies only the pages its writes reach, where a std::vector would write
-// every byte up front. That first write of every page is what set-up pays for memory: on the
-// test machine, beyond the first ~1.3-2.1 GB a process touches, about 13 us per 4 KiB page, so
-// zeroing the 249 MB of a 128^3 run's broken-bond flags could cost ~0.8 s (bench/RESULTS.md).
+// until first touched (first written where a read maps the kernel's shared zero page; on some
+// kernels, 6.18 among them, a read takes a page of its own). An array of flags that a run
+// touches in few places (the broken bonds of a fracture run) then occupies only the pages it
+// reaches, where a std::vector would write every byte up front. That first write of every page is
+// what set-up pays for memory: on the test machine, beyond the first ~1.3-2.1 GB a process touches,
+// about 13 us per 4 KiB page, so zeroing the 249 MB of a 128^3 run's broken-bond flags could cost
+// ~0.8 s (bench/RESULTS.md).
 #include <cstddef>
 #include <cstdlib>
 #include <new>
