@@ -436,6 +436,21 @@ void ModelEvaluator::nodeDamage(double* damage) const {
     // Broken-bond flags: whole numbers, which the double sums below add exactly in any order,
     // so the counts are integers here and the pass vectorises (as a chain of double additions
     // it took 0.26 s per output at 128^3, a quarter of a step).
+    if (halfBondsBuilt_) {
+      // The rows' broken pairs are the broken bonds (halfBondListApplies: a fused critical
+      // stretch breaks both entries of a bond together, and what rewrites the flags is read
+      // into the rows again): counting those reads bytes per break, not a byte per bond, and
+      // leaves the flags' untouched pages untouched (on some kernels a read takes a fresh page:
+      // core/ZeroedArray.hpp). Every bond is within both horizons here (no bondSides). The
+      // counts are whole numbers, the same doubles as the pass below.
+      std::fill(damage, damage + topology_.numOwned, 0.0);
+      halfBonds_.addBrokenBonds(topology_.numOwned, damage);
+      for (int i = 0; i < topology_.numOwned; ++i) {
+        const std::int64_t count = topology_.bondOffsets[i + 1] - topology_.bondOffsets[i];
+        damage[i] = count > 0 ? damage[i] / static_cast<double>(count) : 0.0;
+      }
+      return;
+    }
     const unsigned char* sides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
     for (int i = 0; i < topology_.numOwned; ++i) {
       const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];

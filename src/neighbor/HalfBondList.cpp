@@ -141,6 +141,18 @@ void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke
   rowIntact[r] = intact;
 }
 
+void HalfBondList::addBrokenBonds(int numOwned, double* brokenBonds) const {
+  // Each bond of an owned point is one pair on this rank (no periodic images here), and a row's
+  // broken pairs follow its intact ones: a pass over the breaks, not over every bond.
+  for (std::size_t r = 0; r < rowPoint.size(); ++r) {
+    const int a = rowPoint[r];
+    for (std::int64_t p = rowPairOffsets[r] + rowIntact[r]; p < rowPairOffsets[r + 1]; ++p) {
+      if (a < numOwned) brokenBonds[a] += 1.0;
+      if (pairPoint[p] < numOwned) brokenBonds[pairPoint[p]] += 1.0;
+    }
+  }
+}
+
 void HalfBondList::gatherInfluence(const Topology& t, const double* influence) {
   pairInfluence.assign(static_cast<std::size_t>(numPairs() + kPadding), 1.0);
   for (std::size_t r = 0; r + 1 < rowPairOffsets.size(); ++r)

@@ -104,6 +104,10 @@ struct HalfBondList {
   // for recordBreaks, then moves them behind the row's intact ones (which keep their order), in
   // every per-pair array.
   void breakPairs(const Topology& t, std::size_t r, const int* broke);
+  // Adds, per owned point, 1 for each of its broken bonds to brokenBonds (numOwned entries),
+  // reading only the rows' broken pairs. Valid where the rows' partition is the whole damage
+  // (pairDamage empty: every bond intact or broken).
+  void addBrokenBonds(int numOwned, double* brokenBonds) const;
   // Copies the per-bond influence (full lists) into the pairs.
   void gatherInfluence(const Topology& t, const double* influence);
   // Marks the bonds that breakPairs noted broken in the full lists (this rank's entry of each,

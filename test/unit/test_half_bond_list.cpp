@@ -319,29 +319,39 @@ TEST(HalfBondList, LpsForceIsMinusTheGradientOfTheStoredEnergy) {
 }
 
 // A solver that rejects a trial restores the bond damage: the half list reads it again.
+// Float damage and broken-bond flags: a restored damage state is read into the rows again, and
+// the node damage (with flags counted from the rows' broken pairs) is the full lists' to the bit
+// before and after.
 TEST(HalfBondList, RestoredDamageIsReadAgain) {
-  JitteredLattice half(5, false, false, 2), full(5, false, false, 2);
-  half.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9), criticalStretch(0.01),
-                "One", true, true);
-  full.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9), criticalStretch(0.01),
-                "One", true, false);
-  ASSERT_TRUE(half.evaluator->usesHalfBondList());
-  ModelEvaluator::DamageSnapshot savedHalf, savedFull;
-  half.evaluator->saveDamage(savedHalf);
-  full.evaluator->saveDamage(savedFull);
-  deform(half, 6);
-  deform(full, 6);
-  half.evaluator->evaluate(1.0);  // breaks bonds
-  full.evaluator->evaluate(1.0);
-  double broken = 0;
-  for (float d : bondDamage(half)) broken += d;
-  ASSERT_GT(broken, 0.0);
-  half.evaluator->restoreDamage(savedHalf);
-  full.evaluator->restoreDamage(savedFull);
-  half.evaluator->evaluate(1.0, false);  // at the same state, nothing broken
-  full.evaluator->evaluate(1.0, false);
-  EXPECT_LT(relativeDifference(half.force(), full.force()), 1e-13);
-  EXPECT_EQ(bondDamage(half), bondDamage(full));
+  for (const bool compact : {false, true}) {
+    SCOPED_TRACE(compact ? "flags" : "float damage");
+    JitteredLattice half(5, false, false, 2), full(5, false, false, 2);
+    half.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9),
+                  criticalStretch(0.01), "One", true, true, compact);
+    full.addBlock(peridot::testing::material("Elastic Bond Based", "", 1.0e9),
+                  criticalStretch(0.01), "One", true, false, compact);
+    ASSERT_TRUE(half.evaluator->usesHalfBondList());
+    ASSERT_EQ(half.evaluator->compactDamage(), compact);
+    ModelEvaluator::DamageSnapshot savedHalf, savedFull;
+    half.evaluator->saveDamage(savedHalf);
+    full.evaluator->saveDamage(savedFull);
+    deform(half, 6);
+    deform(full, 6);
+    half.evaluator->evaluate(1.0);  // breaks bonds
+    full.evaluator->evaluate(1.0);
+    double broken = 0;
+    for (float d : bondDamage(half)) broken += d;
+    ASSERT_GT(broken, 0.0);
+    EXPECT_EQ(half.nodeDamage(), full.nodeDamage());
+    half.evaluator->restoreDamage(savedHalf);
+    full.evaluator->restoreDamage(savedFull);
+    EXPECT_EQ(half.nodeDamage(), full.nodeDamage());
+    for (double d : half.nodeDamage()) EXPECT_EQ(d, 0.0);
+    half.evaluator->evaluate(1.0, false);  // at the same state, nothing broken
+    full.evaluator->evaluate(1.0, false);
+    EXPECT_LT(relativeDifference(half.force(), full.force()), 1e-13);
+    EXPECT_EQ(bondDamage(half), bondDamage(full));
+  }
 }
 
 // Broken pairs leave the loops (HalfBondList::rowIntact): each row keeps its intact pairs first,
