@@ -1,6 +1,8 @@
 #include "core/HugePages.hpp"
 
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -29,6 +31,34 @@ std::size_t collapseToHugePages(const void* data, std::size_t bytes) {
   (void)bytes;
   return 0;
 #endif
+}
+
+std::size_t adviseHugePages(void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kBlock = std::uintptr_t{1} << 21;
+  const auto begin = reinterpret_cast<std::uintptr_t>(data);
+  // Only whole blocks: a block the array shares with other data would take a large page for
+  // that data too.
+  const std::uintptr_t first = (begin + kBlock - 1) & ~(kBlock - 1);
+  const std::uintptr_t last = (begin + bytes) & ~(kBlock - 1);
+  if (data == nullptr || last <= first) return 0;
+  return madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE) == 0 ? last - first
+                                                                                   : 0;
+#else
+  (void)data;
+  (void)bytes;
+  return 0;
+#endif
+}
+
+bool largeAllocationsInHugePages() {
+  // Read at the first large allocation (possibly before main); the environment does not change
+  // under a run.
+  static const bool enabled = [] {
+    const char* v = std::getenv("PERIDOT_HUGE_PAGES");
+    return v == nullptr || std::strcmp(v, "0") != 0;
+  }();
+  return enabled;
 }
 
 }  // namespace peridot

@@ -14,4 +14,14 @@ namespace peridot {
 // Returns the bytes it was granted (0 where nothing was asked or granted).
 std::size_t collapseToHugePages(const void* data, std::size_t bytes);
 
+// Asks the kernel to back the 2 MiB blocks that lie wholly inside [data, data + bytes) with large
+// pages when they are first touched (MADV_HUGEPAGE): one fault and one clearing of 2 MiB instead
+// of 512 faults. Pages already touched stay as they are. Returns the bytes advised (0 where
+// nothing was, or on a system without it).
+std::size_t adviseHugePages(void* data, std::size_t bytes);
+
+// Whether the process's large allocations are advised (core/LargeAllocations.cpp): yes unless
+// the environment sets PERIDOT_HUGE_PAGES=0, read once.
+bool largeAllocationsInHugePages();
+
 }  // namespace peridot

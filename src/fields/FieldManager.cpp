@@ -1,5 +1,6 @@
 #include "fields/FieldManager.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace peridot {
@@ -24,8 +25,14 @@ double* FieldManager::node(const std::string& name, int components) {
   auto teuchosComm = topology_.ownedMap->getComm();
   auto storageMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                          static_cast<size_t>(n), 0, teuchosComm));
-  f.overlap = Teuchos::rcp(new Vector(storageMap, true));
-  f.data = f.overlap->getDataNonConst().getRawPtr();
+  f.storage.reset(static_cast<double*>(
+      ::operator new[](static_cast<std::size_t>(n) * sizeof(double), NodeField::kAlignment)));
+  f.data = f.storage.get();
+  std::fill_n(f.data, n, 0.0);
+  // A view of the storage it does not own (Kokkos frees nothing of it); the storage keeps its
+  // address when the field is moved into the map.
+  Vector::dual_view_type::t_dev values(f.data, static_cast<std::size_t>(n), 1);
+  f.overlap = Teuchos::rcp(new Vector(storageMap, Vector::dual_view_type(values, values)));
   f.owned = Teuchos::rcp(new PointValues(topology_.ownedMap, f.data, components));
   f.ghosts = Teuchos::rcp(new PointValues(
       topology_.ghostMap, f.data + static_cast<std::size_t>(topology_.numOwned) * components,

@@ -6,6 +6,7 @@
 #include <Tpetra_Vector.hpp>
 #include <map>
 #include <memory>
+#include <new>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,7 +22,15 @@ using Vector = Tpetra::Vector<double, LocalOrdinal, GlobalOrdinal>;
 struct NodeField {
   std::string name;
   int components = 1;
-  Teuchos::RCP<Vector> overlap;      // owns the storage
+  // The values, allocated here rather than by Kokkos (which mallocs and clears them at once), so
+  // that a large field is faulted in 2 MiB pages (app/LargeAllocations.cpp), aligned to a cache
+  // line as Kokkos aligns them; `overlap` views them.
+  static constexpr std::align_val_t kAlignment{64};
+  struct Release {
+    void operator()(double* p) const { ::operator delete[](p, kAlignment); }
+  };
+  std::unique_ptr<double[], Release> storage;
+  Teuchos::RCP<Vector> overlap;
   Teuchos::RCP<PointValues> owned;   // the owned prefix, by point (ownedMap)
   Teuchos::RCP<PointValues> ghosts;  // the regular ghosts that follow it (ghostMap)
   double* data = nullptr;            // components * numOverlap values
