@@ -56,8 +56,8 @@ void* allocateOrNull(std::size_t bytes, std::size_t alignment = 0) noexcept {
 
 }  // namespace
 
-// Every form a new-expression may call, the aligned ones too (Kokkos allocates Tpetra's vectors
-// through them).
+// Every form a new-expression may call, the aligned ones too (the node fields' storage takes
+// the aligned form: fields/FieldManager.hpp).
 void* operator new(std::size_t bytes) { return allocateOrThrow(bytes); }
 void* operator new[](std::size_t bytes) { return allocateOrThrow(bytes); }
 void* operator new(std::size_t bytes, const std::nothrow_t&) noexcept {

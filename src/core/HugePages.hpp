@@ -20,7 +20,7 @@ std::size_t collapseToHugePages(const void* data, std::size_t bytes);
 // nothing was, or on a system without it).
 std::size_t adviseHugePages(void* data, std::size_t bytes);
 
-// Whether the process's large allocations are advised (core/LargeAllocations.cpp): yes unless
+// Whether the process's large allocations are advised (app/LargeAllocations.cpp): yes unless
 // the environment sets PERIDOT_HUGE_PAGES=0, read once.
 bool largeAllocationsInHugePages();
 
