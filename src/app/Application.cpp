@@ -1,16 +1,23 @@
 #include "app/Application.hpp"
 
 #include <Tpetra_Core.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <thread>
+#if defined(__linux__)
+#include <sched.h>
+#endif
 
 #include "app/Signals.hpp"
 #include "app/Simulation.hpp"
+#include "core/BackgroundFaults.hpp"
 #include "core/Error.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "damage/DamageModel.hpp"
 #include "deck/Deck.hpp"
 #include "deck/DeckScreen.hpp"
@@ -25,6 +32,31 @@ namespace {
 
 // Every rank leaves the time loop after the same step: an orderly exit, no abort needed.
 constexpr int kStoppedWithoutRestart = 5;
+
+// The processors each rank may keep busy (core/ProcessorsPerRank.hpp): its share of the
+// node's, where it may run on more than one. Ranks bound to one core each, or as many ranks as
+// cores, leave none to spare: a helper thread would take time from a rank's own work. With one
+// to spare, large arrays are also faulted in ahead of their use (core/BackgroundFaults.hpp;
+// PERIDOT_BACKGROUND_FAULTS=0 turns that off). PERIDOT_THREADS=n sets the number instead.
+void decideProcessorsPerRank(MPI_Comm comm) {
+  int ranksOnNode = 1;
+  MPI_Comm node;
+  if (MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node) == MPI_SUCCESS) {
+    MPI_Comm_size(node, &ranksOnNode);
+    MPI_Comm_free(&node);
+  }
+  int usable = 1;
+#if defined(__linux__)
+  cpu_set_t mask;
+  if (sched_getaffinity(0, sizeof mask, &mask) == 0) usable = CPU_COUNT(&mask);
+#endif
+  const int onNode = static_cast<int>(std::thread::hardware_concurrency());
+  int processors = std::max(1, std::min(usable, onNode / std::max(ranksOnNode, 1)));
+  if (const char* n = std::getenv("PERIDOT_THREADS")) processors = std::max(1, std::atoi(n));
+  setProcessorsPerRank(processors);
+  const char* v = std::getenv("PERIDOT_BACKGROUND_FAULTS");
+  setBackgroundFaults(processors >= 2 && !(v != nullptr && std::strcmp(v, "0") == 0));
+}
 
 const char* kUsage =
     "Usage: peridot [options] DECK\n"
@@ -166,6 +198,7 @@ int runApplication(int argc, char** argv) {
   Tpetra::ScopeGuard mpi(&argc, &argv);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  decideProcessorsPerRank(MPI_COMM_WORLD);
   int status = 0;
   bool everyRankStopped = false;  // a collective error: every rank left the run alike
   try {

@@ -5,7 +5,9 @@
 // times fewer, and the bond loops' address translations hit more often. An allocation of at
 // least kLargeAllocation bytes is advised (MADV_HUGEPAGE) before the caller first touches it; a
 // smaller one, or any with PERIDOT_HUGE_PAGES=0 in the environment, is plain malloc. Every form
-// allocates with malloc (or posix_memalign) and frees with free.
+// allocates with malloc (or posix_memalign) and frees with free. Where the application turned
+// it on, each large allocation is also handed to the helper that faults it in ahead of its use
+// (core/BackgroundFaults.hpp), and taken back from it before it is freed.
 //
 // Linked into `peridot` and the unit tests only: a bench program counts its allocations with an
 // operator new of its own. Not in sanitizer builds, whose runtime replaces operator new to check
@@ -13,7 +15,11 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
+#include "core/BackgroundFaults.hpp"
 #include "core/HugePages.hpp"
 
 #if !defined(__SANITIZE_ADDRESS__)
@@ -32,9 +38,21 @@ void* allocate(std::size_t bytes, std::size_t alignment = 0) noexcept {
   } else if (posix_memalign(&p, alignment, bytes) != 0) {
     p = nullptr;
   }
-  if (p != nullptr && bytes >= kLargeAllocation && peridot::largeAllocationsInHugePages())
-    peridot::adviseHugePages(p, bytes);
+  if (p != nullptr && bytes >= kLargeAllocation) {
+    if (peridot::largeAllocationsInHugePages()) peridot::adviseHugePages(p, bytes);
+    peridot::faultInBackground(p, bytes);
+  }
   return p;
+}
+
+void release(void* p) noexcept {
+#if defined(__GLIBC__)
+  // Only a large block can be queued; the size is in the block's header, which free reads too.
+  if (p != nullptr && malloc_usable_size(p) >= kLargeAllocation) peridot::forgetBackgroundFaults(p);
+#else
+  peridot::forgetBackgroundFaults(p);
+#endif
+  std::free(p);
 }
 
 void* allocateOrThrow(std::size_t bytes, std::size_t alignment = 0) {
@@ -78,17 +96,17 @@ void* operator new(std::size_t bytes, std::align_val_t a, const std::nothrow_t&)
 void* operator new[](std::size_t bytes, std::align_val_t a, const std::nothrow_t&) noexcept {
   return allocateOrNull(bytes, static_cast<std::size_t>(a));
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p) noexcept { release(p); }
+void operator delete[](void* p) noexcept { release(p); }
+void operator delete(void* p, std::size_t) noexcept { release(p); }
+void operator delete[](void* p, std::size_t) noexcept { release(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
 
 #endif

@@ -1,0 +1,49 @@
+#pragma once
+// How many processors each rank may keep busy: one for its own work, and any the node has to
+// spare beyond one per rank (a single rank on a multi-core machine). Decided once, at start
+// (app/Application.cpp); the set-up's helpers use the spare ones (the neighbour search's
+// threads, core/BackgroundFaults.hpp). 1 until decided.
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace peridot {
+
+void setProcessorsPerRank(int processors);
+int processorsPerRank();
+
+// Calls work(t) for t = 0 .. n-1, work(0) on the calling thread and the others on threads of
+// their own, and returns when every call has: the first exception any call threw is rethrown
+// then. A thread that cannot be started leaves its call to the calling thread.
+template <class Work>
+void runOnThreads(int n, Work&& work) {
+  std::vector<std::exception_ptr> failure(n > 1 ? n : 1);
+  std::vector<std::thread> helpers;
+  std::vector<int> leftOver;
+  for (int t = 1; t < n; ++t) {
+    try {
+      helpers.emplace_back([&, t] {
+        try {
+          work(t);
+        } catch (...) {
+          failure[t] = std::current_exception();
+        }
+      });
+    } catch (...) {
+      leftOver.push_back(t);
+    }
+  }
+  leftOver.insert(leftOver.begin(), 0);
+  for (int t : leftOver) {
+    try {
+      work(t);
+    } catch (...) {
+      failure[t] = std::current_exception();
+    }
+  }
+  for (auto& h : helpers) h.join();
+  for (const auto& f : failure)
+    if (f) std::rethrow_exception(f);
+}
+
+}  // namespace peridot
