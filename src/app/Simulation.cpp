@@ -21,6 +21,7 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "core/Format.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/NeighborSearch.hpp"
 #include "solvers/DynamicRelaxation.hpp"
@@ -136,6 +137,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
+    options.searchThreads = processorsPerRank();
     topology_ = buildTopology(std::move(cloud), std::move(cloudHorizon), options, comm_);
   }
   cloud = PointCloud();

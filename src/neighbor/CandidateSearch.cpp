@@ -14,6 +14,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/ProcessorsPerRank.hpp"
 #include "neighbor/PairTest.hpp"
 
 namespace peridot {
@@ -199,8 +200,8 @@ void forEachRun(const NeighborSearchInput& in, const QueryGrid& g, double reach,
 constexpr int kBlockZ = 2, kBlockY = 8;
 
 template <class Visit>
-void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double reach,
-                       Visit visit) {
+void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double reach, Visit visit,
+                       int threads) {
   if (g.inverseEdge == 0 || (g.dim[2] <= kBlockZ && g.dim[1] <= kBlockY)) {
     forEachRun(in, g, reach, visit);
     return;
@@ -225,9 +226,9 @@ void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double
   for (std::size_t j = 0; j < in.numPoints; ++j)
     forBlocksOf(j, [&](std::size_t b) { members[next[b]++] = static_cast<std::uint32_t>(j); });
   next = std::vector<std::int64_t>();
-  for (int bz = 0; bz < nbz; ++bz)
-    for (int by = 0; by < nby; ++by) {
-      const std::size_t b = static_cast<std::size_t>(bz) * nby + by;
+  auto scanBlocks = [&](std::size_t firstBlock, std::size_t lastBlock) {
+    for (std::size_t b = firstBlock; b < lastBlock; ++b) {
+      const int bz = static_cast<int>(b / nby), by = static_cast<int>(b % nby);
       for (std::int64_t m = start[b]; m < start[b + 1]; ++m) {
         const std::size_t j = members[m];
         int c0[3], c1[3];
@@ -240,6 +241,26 @@ void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double
         scanRows(in, g, reach, j, c0, c1, pad, visit);
       }
     }
+  };
+  // A block's queries are in no other block, so blocks scanned by different threads write
+  // different lists, each still by its candidates in increasing index: the lists do not depend
+  // on the number of threads. Each thread takes a run of blocks with about an equal share of
+  // the block members (the scans).
+  const int numThreads = static_cast<int>(std::min<std::size_t>(
+      static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(numBlocks / 4, 1)));
+  if (numThreads == 1) {
+    scanBlocks(0, numBlocks);
+    return;
+  }
+  std::vector<std::size_t> cut(numThreads + 1, numBlocks);
+  cut[0] = 0;
+  for (int t = 1; t < numThreads; ++t) {
+    const std::int64_t share = start[numBlocks] * t / numThreads;
+    cut[t] = static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), share) -
+                                      start.begin() - 1);
+    cut[t] = std::max(cut[t], cut[t - 1]);
+  }
+  runOnThreads(numThreads, [&](int t) { scanBlocks(cut[t], cut[t + 1]); });
 }
 
 // The scan of one pass. Per run of slots [s0, s0 + n) of one row and candidate j, with
@@ -249,9 +270,11 @@ void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double
 template <class Pass>
 void scanByCandidate(const NeighborSearchInput& in, const std::vector<std::size_t>& queries,
                      const QueryGrid& g, double reach, Pass& pass, bool blocked) {
+  // Threads only for the sphere rule: the other rules' tests count bond filter cuts.
+  const int threads = sphereOnly(in) ? in.threads : 1;
   auto forEach = [&](auto visit) {
     if (blocked)
-      forEachRunBlocked(in, g, reach, visit);
+      forEachRunBlocked(in, g, reach, visit, threads);
     else
       forEachRun(in, g, reach, visit);
   };
@@ -337,41 +360,60 @@ void countSphereOnce(const NeighborSearchInput& in, const std::vector<std::size_
   const double* gy = g.x[1].data();
   const double* gz = g.x[2].data();
   const double* h2 = g.h2.data();
-  int* count = perSlot.data();
   constexpr int kChunk = 64;
-  for (std::size_t j = 0; j < in.numPoints; ++j) {
-    const double* xj = in.x + 3 * j;
-    int c0[3], c1[3];
-    double pad[3];
-    if (!scanRange(g, reach, xj, c0, c1, pad)) continue;
-    const int self = slotOf[j];
-    const double h2j = self >= 0 ? h2[self] : 0.0;
-    if (self >= 0) c0[2] = std::max(c0[2], g.cellOf(gz[self], 2));
-    std::int64_t own = 0;  // minus the count of j's own neighbours found here
-    auto visit = [&](int first, int last, std::size_t) {
-      if (self >= 0 && first <= self) first = self + 1;
-      const double xj0 = xj[0], xj1 = xj[1], xj2 = xj[2];
-      for (int s0 = first; s0 < last; s0 += kChunk) {
-        const int n = std::min(kChunk, last - s0);
-        // 0 or -1, as wide as the doubles (the compare's own vector mask), as in the fill pass.
-        alignas(32) std::int64_t inside[kChunk];
-        alignas(32) std::int64_t mine[kChunk];
-        for (int k = 0; k < n; ++k) {
-          const double dx = xj0 - gx[s0 + k], dy = xj1 - gy[s0 + k], dz = xj2 - gz[s0 + k];
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          inside[k] = -static_cast<std::int64_t>(strict ? d2 < h2[s0 + k] : d2 <= h2[s0 + k]);
-          mine[k] = -static_cast<std::int64_t>(strict ? d2 < h2j : d2 <= h2j);
+  // The candidates [first, last), adding to count (per slot).
+  auto countRange = [&](std::size_t firstCandidate, std::size_t lastCandidate, int* count) {
+    for (std::size_t j = firstCandidate; j < lastCandidate; ++j) {
+      const double* xj = in.x + 3 * j;
+      int c0[3], c1[3];
+      double pad[3];
+      if (!scanRange(g, reach, xj, c0, c1, pad)) continue;
+      const int self = slotOf[j];
+      const double h2j = self >= 0 ? h2[self] : 0.0;
+      if (self >= 0) c0[2] = std::max(c0[2], g.cellOf(gz[self], 2));
+      std::int64_t own = 0;  // minus the count of j's own neighbours found here
+      auto visit = [&](int first, int last, std::size_t) {
+        if (self >= 0 && first <= self) first = self + 1;
+        const double xj0 = xj[0], xj1 = xj[1], xj2 = xj[2];
+        for (int s0 = first; s0 < last; s0 += kChunk) {
+          const int n = std::min(kChunk, last - s0);
+          // 0 or -1, as wide as the doubles (the compare's own vector mask), as in the fill.
+          alignas(32) std::int64_t inside[kChunk];
+          alignas(32) std::int64_t mine[kChunk];
+          for (int k = 0; k < n; ++k) {
+            const double dx = xj0 - gx[s0 + k], dy = xj1 - gy[s0 + k], dz = xj2 - gz[s0 + k];
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            inside[k] = -static_cast<std::int64_t>(strict ? d2 < h2[s0 + k] : d2 <= h2[s0 + k]);
+            mine[k] = -static_cast<std::int64_t>(strict ? d2 < h2j : d2 <= h2j);
+          }
+          int* c = count + s0;
+          for (int k = 0; k < n; ++k) {
+            c[k] -= static_cast<int>(inside[k]);
+            own += mine[k];
+          }
         }
-        int* c = count + s0;
-        for (int k = 0; k < n; ++k) {
-          c[k] -= static_cast<int>(inside[k]);
-          own += mine[k];
-        }
-      }
-    };
-    scanRows(in, g, reach, j, c0, c1, pad, visit);
-    if (self >= 0) count[self] -= static_cast<int>(own);
+      };
+      scanRows(in, g, reach, j, c0, c1, pad, visit);
+      if (self >= 0) count[self] -= static_cast<int>(own);
+    }
+  };
+  // Threads take runs of candidates, each adding to counts of its own (a candidate adds to
+  // slots of any run); the integer sums do not depend on how the candidates were split.
+  const std::size_t numThreads =
+      std::min<std::size_t>(static_cast<std::size_t>(std::max(in.threads, 1)),
+                            std::max<std::size_t>(in.numPoints / 4096, 1));
+  if (numThreads == 1) {
+    countRange(0, in.numPoints, perSlot.data());
+    return;
   }
+  std::vector<std::vector<int>> partial(numThreads - 1, std::vector<int>(perSlot.size(), 0));
+  runOnThreads(static_cast<int>(numThreads), [&](int t) {
+    const std::size_t first = in.numPoints * t / numThreads;
+    const std::size_t last = in.numPoints * (t + 1) / numThreads;
+    countRange(first, last, t == 0 ? perSlot.data() : partial[t - 1].data());
+  });
+  for (const auto& p : partial)
+    for (std::size_t s = 0; s < perSlot.size(); ++s) perSlot[s] += p[s];
 }
 
 // Bit k set where inside[k] (0 or -1) is set, k < n <= 64.

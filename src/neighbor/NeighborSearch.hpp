@@ -23,6 +23,9 @@ struct NeighborSearchInput {
   // lists are symmetric when horizons differ).
   bool unionOfHorizons = false;
   const double* cellEdge = nullptr;  // CellOverlap: per candidate
+  // Threads fillNeighbors may use for the sphere rules (the rank's spare processors): the lists
+  // are the same whatever the number.
+  int threads = 1;
 };
 
 // For each query (an index into the candidates), appends the indices of its neighbours (self

@@ -147,6 +147,7 @@ NeighborSearchInput searchInput(const Candidates& c, const GlobalFacts& g,
   in.bondFilters = opt.bondFilters;
   in.unionOfHorizons = opt.rule.kind != NeighborhoodRule::Kind::CellBox && g.differentHorizons;
   in.cellEdge = c.edge.empty() ? nullptr : c.edge.data();
+  in.threads = opt.searchThreads;
   return in;
 }
 

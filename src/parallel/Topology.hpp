@@ -86,6 +86,7 @@ struct TopologyOptions {
   std::vector<long long>* bondFilterCuts = nullptr;  // per filter, this rank's cuts (added to)
   bool omitBondsBetweenBlocks = false;
   bool weightByBondCount = true;  // second Zoltan pass weighted by bonds per point
+  int searchThreads = 1;          // threads the neighbour search may use (NeighborSearchInput)
 };
 
 // Collective. `cloud` is this rank's share of the points (see PointCloud; any distribution in

@@ -232,6 +232,36 @@ TEST(NeighborSearchByCandidate, WrongCountsAreRefused) {
   EXPECT_EQ(exact.back(), -7);
 }
 
+// The fill split among threads (by blocks of cells) writes the lists of one thread's run alone:
+// the lists are those of one thread and of the per-query search, whatever the number, and a
+// wrong count still throws (from whichever thread meets it).
+TEST(NeighborSearchByCandidate, ThreadsWriteTheSameLists) {
+  std::vector<double> x = lattice(28, 0.1, 0.37);
+  const std::size_t n = x.size() / 3;
+  std::vector<double> horizon(n, 3.015 * 0.1);
+  NeighborSearchInput in;
+  in.x = x.data();
+  in.numPoints = n;
+  in.horizon = horizon.data();
+  const Lists one = byCandidate(in, allQueries(n));
+  ASSERT_GT(one.neighbors.size(), 100 * n);  // ~120 a point inside: the blocks are many
+  for (int threads : {2, 3, 7, 64}) {
+    in.threads = threads;
+    const Lists many = byCandidate(in, allQueries(n));
+    EXPECT_EQ(one.begin, many.begin) << threads;
+    EXPECT_EQ(one.neighbors, many.neighbors) << threads;
+  }
+  expectSameLists(in, allQueries(n));
+  std::vector<int> counts;
+  countNeighbors(in, allQueries(n), counts);
+  counts[n - 10] += 1;  // a list late in the curve: the last thread's
+  std::vector<std::int64_t> begin(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) begin[i + 1] = begin[i] + counts[i];
+  std::vector<int> out(static_cast<std::size_t>(begin[n]));
+  in.threads = 2;
+  EXPECT_THROW(fillNeighbors(in, allQueries(n), begin, counts, out.data()), std::logic_error);
+}
+
 }  // namespace
 // A bond filter gives the same answer from either end of a bond (the search asks from each end,
 // and a cut seen from one end only would leave a one-sided bond): segments crossing a tilted
