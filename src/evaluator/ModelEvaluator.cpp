@@ -10,6 +10,7 @@
 #include "core/CollectiveError.hpp"
 #include "core/Error.hpp"
 #include "core/HugePages.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "deck/Expression.hpp"
 #include "neighbor/PartialVolume.hpp"
 
@@ -62,7 +63,8 @@ void ModelEvaluator::initialize() {
     compactDamage_ = compact && anyDamageModel;
   }
 
-  halfBondsBuilt_ = halfBondListApplies() && buildHalfBondList(topology_, halfBonds_);
+  halfBondsBuilt_ =
+      halfBondListApplies() && buildHalfBondList(topology_, halfBonds_, processorsPerRank());
   storeBondLengthsIfRead();
 
   // Bond influence: stored per bond only when it is not the constant 1. The bond-based models'

@@ -401,7 +401,7 @@ void countSphereOnce(const NeighborSearchInput& in, const std::vector<std::size_
   // slots of any run); the integer sums do not depend on how the candidates were split.
   const std::size_t numThreads =
       std::min<std::size_t>(static_cast<std::size_t>(std::max(in.threads, 1)),
-                            std::max<std::size_t>(in.numPoints / 4096, 1));
+                            std::max<std::size_t>(in.numPoints / 1024, 1));
   if (numThreads == 1) {
     countRange(0, in.numPoints, perSlot.data());
     return;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "core/ProcessorsPerRank.hpp"
 #include "neighbor/BondGeometry.hpp"
 #include "parallel/Partition.hpp"
 
@@ -216,7 +217,7 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
       pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);
 }
 
-bool buildHalfBondList(const Topology& t, HalfBondList& list) {
+bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {
   list = HalfBondList();
   const int n = t.numOwned;
   const int numReal = t.numOwned + t.numGhosts;
@@ -244,20 +245,38 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   // anything -- made the next bond reload the row's bounds and the lists' addresses.)
   const std::int64_t* offsets = t.bondOffsets.data();
   const int* neighbors = t.neighbors.data();
+  // Threads (the rank's spare processors) take runs of rows with about equal shares of the
+  // bonds. A ghost row's pairs come from the owned rows before it in row order: each thread
+  // counts its own (ghostCountOf), and writes them after those of the runs before its own, so
+  // the pairs are where one thread would put them.
+  const int numThreads = std::max(1, std::min(threads, n / 1024));
+  std::vector<int> runStart(static_cast<std::size_t>(numThreads) + 1, n);
+  runStart[0] = 0;
+  for (int k = 1; k < numThreads; ++k)
+    runStart[k] = static_cast<int>(
+        std::lower_bound(offsets, offsets + n, offsets[n] / numThreads * k) - offsets);
   std::vector<std::int64_t> ownedCount(static_cast<std::size_t>(n), 0);
-  std::vector<std::int64_t> ghostCount(static_cast<std::size_t>(t.numGhosts), 0);
-  for (int i = 0; i < n; ++i) {
-    std::int64_t count = 0;
-    const std::int64_t end = offsets[i + 1];
-    for (std::int64_t e = offsets[i]; e < end; ++e) {
-      const int j = neighbors[e];
-      if (after(i, j))
-        ++count;
-      else if (j >= n)
-        ++ghostCount[j - n];
+  std::vector<std::vector<std::int64_t>> ghostCountOf(
+      static_cast<std::size_t>(numThreads),
+      std::vector<std::int64_t>(static_cast<std::size_t>(t.numGhosts), 0));
+  runOnThreads(numThreads, [&](int k) {
+    std::int64_t* ghostCount = ghostCountOf[k].data();
+    for (int i = runStart[k]; i < runStart[k + 1]; ++i) {
+      std::int64_t count = 0;
+      const std::int64_t end = offsets[i + 1];
+      for (std::int64_t e = offsets[i]; e < end; ++e) {
+        const int j = neighbors[e];
+        if (after(i, j))
+          ++count;
+        else if (j >= n)
+          ++ghostCount[j - n];
+      }
+      ownedCount[i] = count;
     }
-    ownedCount[i] = count;
-  }
+  });
+  std::vector<std::int64_t> ghostCount(static_cast<std::size_t>(t.numGhosts), 0);
+  for (int k = 0; k < numThreads; ++k)
+    for (int g = 0; g < t.numGhosts; ++g) ghostCount[g] += ghostCountOf[k][g];
   // Rows: every owned point (local order is curve order), and the ghosts with pairs merged in.
   std::vector<int> ghosts;
   for (int g = 0; g < t.numGhosts; ++g)
@@ -300,27 +319,39 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list) {
   int* pairPoint = list.pairPoint.data();
   std::uint8_t* pairSlot = list.pairSlot.data();
   std::uint8_t* pairSlotHigh = list.pairSlotHigh.data();
-  std::int64_t* ghostNext = ghostRowStart.data();
-  for (int i = 0; i < n; ++i) {
-    std::int64_t next = ownedRowStart[i];
-    const std::int64_t begin = offsets[i], end = offsets[i + 1];
-    for (std::int64_t e = begin; e < end; ++e) {
-      const int j = neighbors[e];
-      const auto slot = static_cast<int>(e - begin);
-      std::int64_t p;
-      if (after(i, j)) {
-        p = next++;
-        pairPoint[p] = j;
-      } else if (j >= n) {
-        p = ghostNext[j - n]++;
-        pairPoint[p] = i;
-      } else {
-        continue;
-      }
-      pairSlot[p] = static_cast<std::uint8_t>(slot & 0xff);
-      if (wide) pairSlotHigh[p] = static_cast<std::uint8_t>(slot >> 8);
+  // Where each run's pairs of each ghost row start: after the earlier runs' (in place of the
+  // runs' counts).
+  for (int g = 0; g < t.numGhosts; ++g) {
+    std::int64_t next = ghostRowStart[g];
+    for (int k = 0; k < numThreads; ++k) {
+      const std::int64_t count = ghostCountOf[k][g];
+      ghostCountOf[k][g] = next;
+      next += count;
     }
   }
+  runOnThreads(numThreads, [&](int k) {
+    std::int64_t* ghostNext = ghostCountOf[k].data();
+    for (int i = runStart[k]; i < runStart[k + 1]; ++i) {
+      std::int64_t next = ownedRowStart[i];
+      const std::int64_t begin = offsets[i], end = offsets[i + 1];
+      for (std::int64_t e = begin; e < end; ++e) {
+        const int j = neighbors[e];
+        const auto slot = static_cast<int>(e - begin);
+        std::int64_t p;
+        if (after(i, j)) {
+          p = next++;
+          pairPoint[p] = j;
+        } else if (j >= n) {
+          p = ghostNext[j - n]++;
+          pairPoint[p] = i;
+        } else {
+          continue;
+        }
+        pairSlot[p] = static_cast<std::uint8_t>(slot & 0xff);
+        if (wide) pairSlotHigh[p] = static_cast<std::uint8_t>(slot >> 8);
+      }
+    }
+  });
 
   return true;
 }

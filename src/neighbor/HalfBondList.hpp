@@ -131,8 +131,9 @@ struct HalfBondList {
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
 // `list` empty) where it cannot be used: a topology without a curve box, periodic images, a full
-// row longer than 65536 entries. Collective: every rank returns the same answer.
-bool buildHalfBondList(const Topology& topology, HalfBondList& list);
+// row longer than 65536 entries. Collective: every rank returns the same answer. `threads` (the
+// rank's spare processors) share the passes over the full lists: the list is the same.
+bool buildHalfBondList(const Topology& topology, HalfBondList& list, int threads = 1);
 
 // The full-list entry of owned point j that holds its bond to point i, or -1 if j's row has
 // none. Where a bond breaks (rare) the loop finds the later end's entry

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <string>
 
 #include "../common/CloudShare.hpp"
 #include "fields/FieldManager.hpp"
@@ -276,6 +277,7 @@ TEST(Topology, PeriodicImagesMatchMinimumImageBruteForce) {
 }  // namespace
 }  // namespace peridot
 
+#include "neighbor/HalfBondList.hpp"
 #include "neighbor/NeighborSearch.hpp"
 
 namespace peridot {
@@ -325,18 +327,59 @@ TEST(Topology, KnifeEdgeLatticeListsMatchPerQuerySearchInOrder) {
   }
   ASSERT_GT(expectedBonds, 0);
 
-  for (bool weighted : {true, false}) {
-    SCOPED_TRACE(weighted ? "weighted re-partition" : "one partition");
-    TopologyOptions options;
-    options.weightByBondCount = weighted;
-    Topology t = testing::topologyOfWhole(cloud, horizon, options, MPI_COMM_WORLD);
-    EXPECT_EQ(t.globalNumBonds, expectedBonds);
-    for (int i = 0; i < t.numOwned; ++i) {
-      std::vector<long long> got;
-      for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
-        got.push_back(t.overlapGlobalId[t.neighbors[b]]);
-      EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+  // Also with the search's count and fill passes shared among threads (a rank's spare
+  // processors): the same lists.
+  for (int threads : {1, 3})
+    for (bool weighted : {true, false}) {
+      SCOPED_TRACE(weighted ? "weighted re-partition" : "one partition");
+      SCOPED_TRACE("threads " + std::to_string(threads));
+      TopologyOptions options;
+      options.weightByBondCount = weighted;
+      options.searchThreads = threads;
+      Topology t = testing::topologyOfWhole(cloud, horizon, options, MPI_COMM_WORLD);
+      EXPECT_EQ(t.globalNumBonds, expectedBonds);
+      for (int i = 0; i < t.numOwned; ++i) {
+        std::vector<long long> got;
+        for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+          got.push_back(t.overlapGlobalId[t.neighbors[b]]);
+        EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+      }
     }
+}
+
+// The half bond list built with its passes shared among threads is the one-thread list, array
+// for array: owned rows split among threads, and (on 2 and 3 ranks) ghost rows whose pairs come
+// from several threads' runs of rows.
+TEST(Topology, HalfBondListTheSameOnThreads) {
+  const int n = 22;
+  PointCloud cloud;
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        cloud.x.insert(cloud.x.end(), {i + jitter(gen), j + jitter(gen), k + jitter(gen)});
+        cloud.volume.push_back(1.0);
+        cloud.blockId.push_back(1);
+        cloud.globalId.push_back(static_cast<long long>(cloud.globalId.size()));
+      }
+  cloud.blockNames = {{1, "block_1"}};
+  std::vector<double> horizon(cloud.size(), 2.1);
+  Topology t = testing::topologyOfWhole(cloud, horizon, TopologyOptions{}, MPI_COMM_WORLD);
+  HalfBondList one;
+  ASSERT_TRUE(buildHalfBondList(t, one, 1));
+  ASSERT_GT(one.numPairs(), 0);
+  for (int threads : {2, 3, 8}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    HalfBondList many;
+    ASSERT_TRUE(buildHalfBondList(t, many, threads));
+    EXPECT_EQ(one.rowPoint, many.rowPoint);
+    EXPECT_EQ(one.rowPairOffsets, many.rowPairOffsets);
+    EXPECT_EQ(one.rowIntact, many.rowIntact);
+    EXPECT_EQ(one.pairPoint, many.pairPoint);
+    EXPECT_EQ(one.pairSlot, many.pairSlot);
+    EXPECT_EQ(one.pairSlotHigh, many.pairSlotHigh);
+    EXPECT_EQ(one.longestRow, many.longestRow);
   }
 }
 
