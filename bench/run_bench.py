@@ -235,6 +235,10 @@ run             %(steps)d
 # ----------------------------------------------------------------------------------------------
 # Running
 # ----------------------------------------------------------------------------------------------
+# Extra mpirun options for the binding of the ranks (--bind none: ranks may use every core, as
+# a process started without mpirun does; mpirun's default binds each of up to two ranks to a
+# core, which leaves Peridot's rank no processor to spare).
+BIND = []
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 
@@ -275,7 +279,7 @@ def run_timed(cmd, ranks, cwd, tag, timeout):
     for f in os.listdir(cwd):
         if f.startswith("time_" + tag + "."):
             os.remove(os.path.join(cwd, f))
-    wrapped = ["mpirun", "-np", str(ranks), "sh", "-c",
+    wrapped = ["mpirun", "-np", str(ranks)] + BIND + ["sh", "-c",
                'exec /usr/bin/time -v -o "$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', prefix] + cmd
     busy0 = machine_busy_seconds()
     t0 = time.monotonic()
@@ -535,6 +539,8 @@ def main():
                     help="Peridot's LPS influence function: 1/|xi| (LAMMPS's, default) or 1")
     ap.add_argument("--peridot", default=None, help="peridot binary (default: /tmp/build-bench/peridot)")
     ap.add_argument("--lmp", default=shutil.which("lmp") or "lmp")
+    ap.add_argument("--bind", choices=["default", "none"], default="default",
+                    help="mpirun's binding of the ranks (none: --bind-to none, for both codes)")
     ap.add_argument("--workdir", default="/tmp/peridot-bench")
     ap.add_argument("--timeout", type=int, default=900, help="per run, seconds")
     ap.add_argument("--wait-quiet", type=int, default=120,
@@ -560,6 +566,8 @@ def main():
     ap.add_argument("--report", nargs="+", default=None, metavar="JSON",
                     help="only print the tables from saved JSON result files")
     a = ap.parse_args()
+    if a.bind == "none":
+        BIND[:] = ["--bind-to", "none"]
 
     if a.report:
         results, baselines = [], {}
