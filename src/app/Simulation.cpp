@@ -137,7 +137,7 @@ Simulation::Simulation(RunConfig config, MPI_Comm comm, std::ostream& log)
     options.bondFilterCuts = &bondFilterCuts;
     options.omitBondsBetweenBlocks = config_.discretization.omitBondsBetweenBlocks;
     options.periodic = config_.discretization.periodic;
-    options.searchThreads = processorsPerRank();
+    options.searchThreads = setUpThreads();
     topology_ = buildTopology(std::move(cloud), std::move(cloudHorizon), options, comm_);
   }
   cloud = PointCloud();

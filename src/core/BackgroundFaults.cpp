@@ -105,6 +105,14 @@ void helperLoop() {
   }
 }
 
+// A child of fork has no helper: it queues nothing and takes nothing back (it never locks the
+// mutex, which a parent's thread may have held at the fork).
+void forgetHelperInChild() {
+  State& s = state();
+  s.enabled.store(false);
+  s.pending.store(0);
+}
+
 }  // namespace
 
 void setBackgroundFaults(bool enabled) { state().enabled.store(enabled); }
@@ -117,6 +125,9 @@ bool faultInBackground(void* data, std::size_t bytes) {
   bool ok = true;
   std::call_once(s.started, [&] {
     try {
+#if defined(__linux__)
+      pthread_atfork(nullptr, nullptr, forgetHelperInChild);
+#endif
       std::thread(helperLoop).detach();
     } catch (...) {
       ok = false;

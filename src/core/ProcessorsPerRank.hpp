@@ -12,6 +12,11 @@ namespace peridot {
 void setProcessorsPerRank(int processors);
 int processorsPerRank();
 
+// The threads a set-up pass shares its work among: the rank's processors, at most 8 (the passes
+// are bound by memory traffic well before that, and each thread of the search's count keeps
+// counts of its own: 4 bytes a point).
+int setUpThreads();
+
 // Calls work(t) for t = 0 .. n-1, work(0) on the calling thread and the others on threads of
 // their own, and returns when every call has: the first exception any call threw is rethrown
 // then. A thread that cannot be started leaves its call to the calling thread.

@@ -64,7 +64,7 @@ void ModelEvaluator::initialize() {
   }
 
   halfBondsBuilt_ =
-      halfBondListApplies() && buildHalfBondList(topology_, halfBonds_, processorsPerRank());
+      halfBondListApplies() && buildHalfBondList(topology_, halfBonds_, setUpThreads());
   storeBondLengthsIfRead();
 
   // Bond influence: stored per bond only when it is not the constant 1. The bond-based models'
