@@ -51,6 +51,17 @@ std::map<long long, std::vector<long long>> bruteForce(const PointCloud& c,
   return out;
 }
 
+// Every owned point's list, as global ids in list order, is expected's list for it.
+void expectOwnedListsAre(const Topology& t,
+                         const std::map<long long, std::vector<long long>>& expected) {
+  for (int i = 0; i < t.numOwned; ++i) {
+    std::vector<long long> got;
+    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
+      got.push_back(t.overlapGlobalId[t.neighbors[b]]);
+    EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
+  }
+}
+
 void expectListsMatch(const PointCloud& cloud, const std::vector<double>& h,
                       const std::vector<BondFilter>& filters) {
   TopologyOptions options;
@@ -62,12 +73,7 @@ void expectListsMatch(const PointCloud& cloud, const std::vector<double>& h,
   EXPECT_EQ(total, static_cast<long long>(cloud.size()));
   for (const auto& kv : expected) bonds += static_cast<long long>(kv.second.size());
   EXPECT_EQ(t.globalNumBonds, bonds);
-  for (int i = 0; i < t.numOwned; ++i) {
-    std::vector<long long> got;
-    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
-      got.push_back(t.overlapGlobalId[t.neighbors[b]]);
-    EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
-  }
+  expectOwnedListsAre(t, expected);
 }
 
 TEST(Topology, NeighbourListsMatchBruteForce) {
@@ -108,12 +114,7 @@ TEST(Topology, CellOverlapListsMatchBruteForce) {
   }
   EXPECT_GT(beyond, 0);  // the rule reaches past the horizon
   EXPECT_EQ(t.globalNumBonds, bonds);
-  for (int i = 0; i < t.numOwned; ++i) {
-    std::vector<long long> got;
-    for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
-      got.push_back(t.overlapGlobalId[t.neighbors[b]]);
-    EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
-  }
+  expectOwnedListsAre(t, expected);
 }
 
 TEST(Topology, VariableHorizonListsAreUnionsWithSides) {
@@ -338,12 +339,7 @@ TEST(Topology, KnifeEdgeLatticeListsMatchPerQuerySearchInOrder) {
       options.searchThreads = threads;
       Topology t = testing::topologyOfWhole(cloud, horizon, options, MPI_COMM_WORLD);
       EXPECT_EQ(t.globalNumBonds, expectedBonds);
-      for (int i = 0; i < t.numOwned; ++i) {
-        std::vector<long long> got;
-        for (auto b = t.bondOffsets[i]; b < t.bondOffsets[i + 1]; ++b)
-          got.push_back(t.overlapGlobalId[t.neighbors[b]]);
-        EXPECT_EQ(got, expected.at(t.overlapGlobalId[i])) << "point " << t.overlapGlobalId[i];
-      }
+      expectOwnedListsAre(t, expected);
     }
 }
 
