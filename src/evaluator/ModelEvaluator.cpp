@@ -167,16 +167,18 @@ void ModelEvaluator::initialize() {
     }
   }
 
-  // Bonds may only join points whose models can read each other's per-point state.
-  {
+  // Bonds may only join points whose models can read each other's per-point state. Every rank
+  // has every block (some without points): with one kind of material (the usual deck) no bond
+  // can join two, and no rank makes the pass over every bond.
+  std::vector<std::string> families;
+  for (const auto& b : blocks_)
+    if (std::find(families.begin(), families.end(), b.material->family()) == families.end())
+      families.push_back(b.material->family());
+  if (families.size() > 1) {
     double* family = fields_.node("Material_Family_Index", 1);
-    std::vector<std::string> families;
     for (const auto& b : blocks_) {
-      const std::string f = b.material->family();
-      auto it = std::find(families.begin(), families.end(), f);
-      const int index = static_cast<int>(it - families.begin());
-      if (it == families.end()) families.push_back(f);
-      for (int i : b.points) family[i] = index;
+      const auto it = std::find(families.begin(), families.end(), b.material->family());
+      for (int i : b.points) family[i] = static_cast<double>(it - families.begin());
     }
     fields_.refreshGhosts("Material_Family_Index");
     std::string message;

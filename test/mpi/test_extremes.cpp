@@ -364,6 +364,40 @@ TEST(Extremes, PoissonsRatioOfOneHalfIsAClearError) {
   }
 }
 
+// Two blocks of different kinds of material (LPS and PMB) bonded across their interface: their
+// models cannot read each other's per-point state, so the set-up stops with a message that says
+// how to separate them. (Blocks of one kind skip this check's pass over the bonds.)
+TEST(Extremes, BondsBetweenDifferentKindsOfMaterialAreAClearError) {
+  MeshFile mesh("two_kinds", lattice(4, 2, 2, 2.0));
+  Scene s;
+  s.mesh = mesh.name;
+  s.numPoints = 16;
+  s.material = "Elastic";
+  s.blockTwo = true;
+  std::string d = deck(s);
+  const std::string lps = "    M2:\n      Material Model: \"Elastic\"\n";
+  const auto at = d.find(lps);
+  ASSERT_NE(at, std::string::npos) << d;
+  d.replace(at, lps.size(), "    M2:\n      Material Model: \"Elastic Bond Based\"\n");
+  const std::string shear = "      Shear Modulus: 1\n";
+  const auto second = d.find(shear, at);
+  ASSERT_NE(second, std::string::npos) << d;
+  d.erase(second, shear.size());
+  try {
+    makeSimulation(d);
+    FAIL() << "bonds between LPS and PMB blocks were accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("Omit Bonds Between Blocks"), std::string::npos)
+        << e.what();
+  }
+  // Separated, the same blocks set up.
+  const std::string mesh0 = "    Input Mesh File: " + mesh.name + "\n";
+  const auto m = d.find(mesh0);
+  ASSERT_NE(m, std::string::npos) << d;
+  d.insert(m + mesh0.size(), "    Omit Bonds Between Blocks: All\n");
+  EXPECT_NO_THROW(makeSimulation(d));
+}
+
 // Two blocks whose moduli differ by 1e6, bonded across their interface: the estimate follows the
 // stiff block, the run is stable and the leapfrog energy is conserved.
 class Contrast : public ::testing::TestWithParam<const char*> {};
