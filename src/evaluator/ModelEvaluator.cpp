@@ -208,7 +208,8 @@ void ModelEvaluator::initialize() {
   syncAfterPrecompute_.assign(syncPre.begin(), syncPre.end());
 
   if (halfBondsBuilt_) {
-    if (storeBondLengths_) halfBonds_.storeLengths(state_.x);
+    if (storeBondLengths_)
+      halfBonds_.storeLengths(state_.x, HalfBondList::kLengthTableLimit, setUpThreads());
     if (state_.influence) halfBonds_.gatherInfluence(topology_, state_.influence);
     // The rows as built hold every pair intact, in order, and nothing has written damage yet:
     // the half list is not built where a damage model writes damage before the first step

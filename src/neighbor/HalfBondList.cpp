@@ -161,60 +161,152 @@ void HalfBondList::gatherInfluence(const Topology& t, const double* influence) {
       pairInfluence[p] = influence[fullEntry(t, r, p)];
 }
 
-void HalfBondList::storeLengths(const double* x, std::size_t tableLimit) {
-  const auto entries = static_cast<std::size_t>(numPairs() + kPadding);
-  pairLength = std::vector<double>();
-  pairLengthIndexHigh = std::vector<std::uint8_t>();
-  // The table first; entry 0 is the padding's 1. The values are found by an open-addressed
-  // hash of their bits, at least twice the limit in size (a lookup per pair: it must cost little
-  // beside the square root).
-  lengthTable.assign(1, 1.0);
-  pairLengthIndex.assign(entries, 0);
-  int log2Slots = 1;
-  while ((std::size_t{1} << log2Slots) < 2 * tableLimit) ++log2Slots;
-  const std::size_t mask = (std::size_t{1} << log2Slots) - 1;
-  std::vector<std::int32_t> slot(mask + 1, -1);
-  const auto bits = [](double v) {
+namespace {
+
+// Distinct doubles in the order first seen, found by an open-addressed hash of their bits, at
+// least twice the limit in size (a lookup per pair: it must cost little beside the square root).
+// Entry 0 is the padding's 1.
+class DistinctValues {
+ public:
+  explicit DistinctValues(std::size_t limit) : limit_(limit) {
+    while ((std::size_t{1} << log2Slots_) < 2 * limit) ++log2Slots_;
+    mask_ = (std::size_t{1} << log2Slots_) - 1;
+    slot_.assign(mask_ + 1, -1);
+    values.push_back(1.0);
+    slot_[home(bits(1.0))] = 0;
+  }
+  // The index of v (added if new), or -1 when it is new and the limit is reached.
+  std::int64_t indexOf(double v) {
+    const std::uint64_t b = bits(v);
+    for (std::size_t h = home(b);; h = (h + 1) & mask_) {
+      if (slot_[h] < 0) {
+        if (values.size() >= limit_) return -1;
+        slot_[h] = static_cast<std::int32_t>(values.size());
+        values.push_back(v);
+        return slot_[h];
+      }
+      if (bits(values[static_cast<std::size_t>(slot_[h])]) == b) return slot_[h];
+    }
+  }
+  std::vector<double> values;
+
+ private:
+  static std::uint64_t bits(double v) {
     std::uint64_t b;
     std::memcpy(&b, &v, sizeof b);
     return b;
-  };
-  const auto home = [&](std::uint64_t b) {
-    return static_cast<std::size_t>((b * 0x9E3779B97F4A7C15ull) >> (64 - log2Slots));
-  };
-  slot[home(bits(1.0))] = 0;
-  // The table index of v, or -1 when the table is full.
-  const auto indexOf = [&](double v) -> std::int64_t {
-    const std::uint64_t b = bits(v);
-    for (std::size_t h = home(b);; h = (h + 1) & mask) {
-      if (slot[h] < 0) {
-        if (lengthTable.size() >= tableLimit) return -1;
-        slot[h] = static_cast<std::int32_t>(lengthTable.size());
-        lengthTable.push_back(v);
-        return slot[h];
-      }
-      if (bits(lengthTable[static_cast<std::size_t>(slot[h])]) == b) return slot[h];
-    }
-  };
-  bool fits = true;
-  for (std::size_t r = 0; r < rowPoint.size() && fits; ++r)
-    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1] && fits; ++p) {
-      const std::int64_t index = indexOf(referenceBondLength(x, rowPoint[r], pairPoint[p]));
-      fits = index >= 0;
-      pairLengthIndex[p] = static_cast<std::uint8_t>(index);
-      if (index > 255 && pairLengthIndexHigh.empty()) pairLengthIndexHigh.assign(entries, 0);
-      if (!pairLengthIndexHigh.empty())
-        pairLengthIndexHigh[p] = static_cast<std::uint8_t>(index >> 8);
-    }
-  if (fits) return;
-  // Too many distinct lengths (an irregular mesh): one double per pair.
-  pairLengthIndex = std::vector<std::uint8_t>();
+  }
+  std::size_t home(std::uint64_t b) const {
+    return static_cast<std::size_t>((b * 0x9E3779B97F4A7C15ull) >> (64 - log2Slots_));
+  }
+  std::size_t limit_;
+  int log2Slots_ = 1;
+  std::size_t mask_ = 0;
+  std::vector<std::int32_t> slot_;
+};
+
+}  // namespace
+
+void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int threads) {
+  const auto entries = static_cast<std::size_t>(numPairs() + kPadding);
+  pairLength = std::vector<double>();
   pairLengthIndexHigh = std::vector<std::uint8_t>();
   lengthTable = std::vector<double>();
+  pairLengthIndex.assign(entries, 0);
+  // Threads take runs of rows with about equal shares of the pairs. Each finds its run's
+  // distinct lengths (in the order it meets them) and writes its own indices; the tables are
+  // then joined in run order, which puts every length where one thread would have (at its first
+  // pair), and each run's indices are translated. A table thus does not depend on the threads.
+  const std::size_t numRows = rowPoint.size();
+  const int numThreads =
+      static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, numRows / 1024)));
+  std::vector<std::int64_t> runPair(static_cast<std::size_t>(numThreads) + 1, numPairs());
+  std::vector<std::size_t> runRow(static_cast<std::size_t>(numThreads) + 1, numRows);
+  runPair[0] = 0;
+  runRow[0] = 0;
+  for (int k = 1; k < numThreads; ++k) {
+    runRow[k] =
+        static_cast<std::size_t>(std::lower_bound(rowPairOffsets.begin(), rowPairOffsets.end() - 1,
+                                                  numPairs() / numThreads * k) -
+                                 rowPairOffsets.begin());
+    runRow[k] = std::max(runRow[k], runRow[k - 1]);
+    runPair[k] = rowPairOffsets[runRow[k]];
+  }
+  struct Run {
+    std::vector<double> distinct;      // the run's lengths in the order it met them
+    std::vector<std::uint8_t> high;    // per pair of the run, where an index needs it
+    std::vector<std::int32_t> global;  // per run index: the joined table's
+    bool fits = true;
+  };
+  std::vector<Run> runs(static_cast<std::size_t>(numThreads));
+  runOnThreads(numThreads, [&](int t) {
+    // Locals only in the loop: the runs' records share cache lines, and a store to a byte
+    // array may alias anything the loop would otherwise reload.
+    DistinctValues table(tableLimit);
+    std::vector<std::uint8_t> high;
+    std::uint8_t* low = pairLengthIndex.data();
+    const std::int64_t* offsets = rowPairOffsets.data();
+    const int* rows = rowPoint.data();
+    const int* points = pairPoint.data();
+    const std::int64_t p0 = runPair[t];
+    bool fits = true;
+    for (std::size_t r = runRow[t]; r < runRow[t + 1] && fits; ++r) {
+      const int a = rows[r];
+      const std::int64_t end = offsets[r + 1];
+      for (std::int64_t p = offsets[r]; p < end; ++p) {
+        const std::int64_t index = table.indexOf(referenceBondLength(x, a, points[p]));
+        if (index < 0) {
+          fits = false;
+          break;
+        }
+        low[p] = static_cast<std::uint8_t>(index);
+        if (index > 255 && high.empty())
+          high.assign(static_cast<std::size_t>(runPair[t + 1] - p0), 0);
+        if (!high.empty()) high[p - p0] = static_cast<std::uint8_t>(index >> 8);
+      }
+    }
+    runs[t].fits = fits;
+    runs[t].high = std::move(high);
+    runs[t].distinct = std::move(table.values);
+  });
+  bool fits = true;
+  for (const Run& run : runs) fits = fits && run.fits;
+  DistinctValues joined(tableLimit);
+  for (std::size_t t = 0; t < runs.size() && fits; ++t)
+    for (const double v : runs[t].distinct) {
+      const std::int64_t index = joined.indexOf(v);
+      fits = fits && index >= 0;
+      runs[t].global.push_back(static_cast<std::int32_t>(index));
+    }
+  if (fits) {
+    lengthTable = std::move(joined.values);
+    if (lengthTable.size() > 256) pairLengthIndexHigh.assign(entries, 0);
+    runOnThreads(numThreads, [&](int t) {
+      const Run& run = runs[t];
+      bool same = run.high.empty();
+      for (std::size_t k = 0; k < run.global.size() && same; ++k)
+        same = run.global[k] == static_cast<std::int32_t>(k);
+      if (same) return;  // indices and (absent) high bytes already the joined table's
+      for (std::int64_t p = runPair[t]; p < runPair[t + 1]; ++p) {
+        const int local =
+            int{pairLengthIndex[p]} | (run.high.empty() ? 0 : int{run.high[p - runPair[t]]} << 8);
+        const std::int32_t index = run.global[static_cast<std::size_t>(local)];
+        pairLengthIndex[p] = static_cast<std::uint8_t>(index);
+        if (!pairLengthIndexHigh.empty())
+          pairLengthIndexHigh[p] = static_cast<std::uint8_t>(index >> 8);
+      }
+    });
+    return;
+  }
+  // Too many distinct lengths (an irregular mesh): one double per pair.
+  runs = std::vector<Run>();
+  pairLengthIndex = std::vector<std::uint8_t>();
   pairLength.assign(entries, 1.0);
-  for (std::size_t r = 0; r < rowPoint.size(); ++r)
-    for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
-      pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);
+  runOnThreads(numThreads, [&](int t) {
+    for (std::size_t r = runRow[t]; r < runRow[t + 1]; ++r)
+      for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
+        pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);
+  });
 }
 
 bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {

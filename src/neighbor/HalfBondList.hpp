@@ -94,8 +94,8 @@ struct HalfBondList {
   }
   // Stores each pair's |xi| from the reference coordinates x (overlap-indexed): in
   // pairLengthIndex and lengthTable if the rank has at most tableLimit distinct values, else in
-  // pairLength.
-  void storeLengths(const double* x, std::size_t tableLimit = kLengthTableLimit);
+  // pairLength. `threads` (the rank's spare processors) share the passes: the arrays are the same.
+  void storeLengths(const double* x, std::size_t tableLimit = kLengthTableLimit, int threads = 1);
   bool storesLengths() const { return !pairLength.empty() || !pairLengthIndex.empty(); }
   // Copies the run's bond damage (float or flags; null: none) into the pairs, every row in its
   // order with its broken pairs last (rowIntact).

@@ -9,6 +9,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <string>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "JitteredLattice.hpp"
 #include "Materials.hpp"
 #include "damage/CriticalStretch.hpp"
+#include "neighbor/BondGeometry.hpp"
 #include "neighbor/HalfBondList.hpp"
 #include "parallel/Partition.hpp"
 
@@ -282,6 +284,60 @@ TEST(HalfBondList, LengthIndexInOneByteUnlessTheTableOutgrowsIt) {
     for (std::int64_t p = h.numPairs(); p < h.numPairs() + HalfBondList::kPadding; ++p)
       EXPECT_EQ(h.lengthTable[h.lengthIndex(p)], 1.0);
   }
+}
+
+// Threads share storeLengths by runs of rows, each with a table of its own, joined afterwards:
+// the table, the indices (one byte or two) and the per-pair fallback are one thread's. Rows of
+// 4 pairs over 5000 points, each pair a few steps along a grid of unit spacing (tens of distinct
+// lengths, met in a different order by each run), jittered (thousands: two-byte indices), and
+// jittered past a table limit of 3000 (one double per pair).
+TEST(HalfBondList, LengthsStoredByThreadsAreOneThreads) {
+  const int n = 5000;
+  for (const bool jittered : {false, true})
+    for (const std::size_t limit : {HalfBondList::kLengthTableLimit, std::size_t{3000}}) {
+      SCOPED_TRACE(std::string(jittered ? "jittered" : "grid") + ", limit " +
+                   std::to_string(limit));
+      std::mt19937 rng(11);
+      std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+      const int offsets[8] = {1, 2, 16, 17, 18, 288, 289, 290};
+      std::uniform_int_distribution<int> pick(0, 7);
+      std::vector<double> x(3 * static_cast<std::size_t>(n));
+      for (int k = 0; k < n; ++k) {
+        const int c[3] = {k % 17, (k / 17) % 17, k / 289};
+        for (int d = 0; d < 3; ++d) x[3 * k + d] = c[d] + (jittered ? jitter(rng) : 0.0);
+      }
+      HalfBondList one;
+      one.rowPairOffsets.push_back(0);
+      for (int r = 0; r < n; ++r) {
+        one.rowPoint.push_back(r);
+        for (int m = 0; m < 4; ++m) one.pairPoint.push_back((r + offsets[pick(rng)]) % n);
+        one.rowPairOffsets.push_back(static_cast<std::int64_t>(one.pairPoint.size()));
+      }
+      one.pairPoint.resize(one.pairPoint.size() + HalfBondList::kPadding, 0);
+      HalfBondList many = one;
+      one.storeLengths(x.data(), limit, 1);
+      if (limit == 3000 && jittered) {
+        ASSERT_FALSE(one.pairLength.empty());  // past the limit: per pair
+      } else {
+        ASSERT_FALSE(one.pairLengthIndex.empty());
+        EXPECT_EQ(one.pairLengthIndexHigh.empty(), !jittered);
+      }
+      for (std::int64_t p = 0; p < one.numPairs(); ++p) {
+        const double expected =
+            referenceBondLength(x.data(), one.rowPoint[static_cast<std::size_t>(p / 4)],
+                                one.pairPoint[static_cast<std::size_t>(p)]);
+        ASSERT_EQ(one.pairLength.empty() ? one.lengthTable[one.lengthIndex(p)] : one.pairLength[p],
+                  expected)
+            << p;
+      }
+      for (const int threads : {2, 3, 4}) {
+        many.storeLengths(x.data(), limit, threads);
+        EXPECT_EQ(many.lengthTable, one.lengthTable) << threads;
+        EXPECT_EQ(many.pairLengthIndex, one.pairLengthIndex) << threads;
+        EXPECT_EQ(many.pairLengthIndexHigh, one.pairLengthIndexHigh) << threads;
+        EXPECT_EQ(many.pairLength, one.pairLength) << threads;
+      }
+    }
 }
 
 TEST(HalfBondList, LpsForceIsMinusTheGradientOfTheStoredEnergy) {
