@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "core/Error.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "neighbor/PartialVolume.hpp"
 
 namespace peridot {
@@ -139,32 +140,44 @@ void plainStiffnessSum(const ModelState& s, const std::vector<int>& points, Cons
   std::int64_t longest = 0;
   for (int i : points) longest = std::max(longest, offsets[i + 1] - offsets[i]);
   const std::size_t n = static_cast<std::size_t>(longest);
-  std::vector<double> buffer(4 * n);
-  double *X0 = buffer.data(), *X1 = X0 + n, *X2 = X1 + n, *term = X2 + n;
-  for (int i : points) {
-    const double c = constantOf(i);
-    const std::int64_t first = offsets[i];
-    const int m = static_cast<int>(offsets[i + 1] - first);
-    const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
-    for (int k = 0; k < m; ++k) {
-      const int j = neighbors[first + k];
-      // The volume, or zero for a bond outside the owner's horizon: its term is then 0.
-      term[k] = kOneSided && !(sides[first + k] & 1) ? 0.0 : volume[j];
-      if (!kStoredLength) {
-        X0[k] = x[3 * j] - xi0;
-        X1[k] = x[3 * j + 1] - xi1;
-        X2[k] = x[3 * j + 2] - xi2;
+  // The points [first, last) of `points`, with a row buffer of their own.
+  const auto sumRange = [&](std::size_t firstPoint, std::size_t lastPoint) {
+    std::vector<double> buffer(4 * n);
+    double *X0 = buffer.data(), *X1 = X0 + n, *X2 = X1 + n, *term = X2 + n;
+    for (std::size_t p = firstPoint; p < lastPoint; ++p) {
+      const int i = points[p];
+      const double c = constantOf(i);
+      const std::int64_t first = offsets[i];
+      const int m = static_cast<int>(offsets[i + 1] - first);
+      const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+      for (int k = 0; k < m; ++k) {
+        const int j = neighbors[first + k];
+        // The volume, or zero for a bond outside the owner's horizon: its term is then 0.
+        term[k] = kOneSided && !(sides[first + k] & 1) ? 0.0 : volume[j];
+        if (!kStoredLength) {
+          X0[k] = x[3 * j] - xi0;
+          X1[k] = x[3 * j + 1] - xi1;
+          X2[k] = x[3 * j + 2] - xi2;
+        }
       }
+      const double* length = kStoredLength ? s.bondLength + first : nullptr;
+      for (int k = 0; k < m; ++k) {
+        const double zeta =
+            kStoredLength ? length[k] : std::sqrt(sumOfSquares(X0[k], X1[k], X2[k]));
+        term[k] = term[k] * c / zeta;
+      }
+      double total = 0;
+      for (int k = 0; k < m; ++k) total += term[k];
+      sum[i] = total;
     }
-    const double* length = kStoredLength ? s.bondLength + first : nullptr;
-    for (int k = 0; k < m; ++k) {
-      const double zeta = kStoredLength ? length[k] : std::sqrt(sumOfSquares(X0[k], X1[k], X2[k]));
-      term[k] = term[k] * c / zeta;
-    }
-    double total = 0;
-    for (int k = 0; k < m; ++k) total += term[k];
-    sum[i] = total;
-  }
+  };
+  // Each sum is one point's, made in the same order whoever makes it: the set-up's threads take
+  // runs of points (the estimate was 0.55 s of a 128^3 set-up on one thread).
+  const std::size_t numThreads = std::min<std::size_t>(
+      static_cast<std::size_t>(setUpThreads()), std::max<std::size_t>(points.size() / 1024, 1));
+  runOnThreads(static_cast<int>(numThreads), [&](int t) {
+    sumRange(points.size() * t / numThreads, points.size() * (t + 1) / numThreads);
+  });
 }
 
 }  // namespace

@@ -10,10 +10,12 @@
 #include <cstring>
 #include <memory>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "JitteredLattice.hpp"
 #include "Materials.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "damage/CriticalStretch.hpp"
 #include "evaluator/ModelEvaluator.hpp"
 
@@ -273,9 +275,16 @@ TEST(LeanBonds, ModelsThatNeedStoredFormsGetThem) {
 // The stable-time-step sum (MaterialModel::stiffnessSum: its terms in vector lanes, then summed
 // in order) against the plain loop, to the bit: sum over the bonds within i's horizon of
 // V_j 18 K / (pi delta^4) / |xi|, with one-sided bonds (horizons that vary), with |xi| stored
-// and computed.
-TEST(LeanBonds, StiffnessSumIsThePlainSumInOrder) {
-  peridot::testing::JitteredLattice L(5, false, true, 3);
+// and computed; on 5^3 points with one thread, and on 15^3 shared among three (runs of points).
+class StiffnessSum : public ::testing::TestWithParam<std::tuple<int, int>> {};
+
+TEST_P(StiffnessSum, IsThePlainSumInOrder) {
+  const auto [n, processors] = GetParam();
+  setProcessorsPerRank(processors);
+  struct Restore {
+    ~Restore() { setProcessorsPerRank(1); }
+  } restore;
+  peridot::testing::JitteredLattice L(n, false, true, 3);
   L.addBlock(peridot::testing::material("Elastic", "", 1.0e9, 0.25), nullptr, "One", true, false);
   const Topology& t = L.topology;
   ModelState s = L.evaluator->state();
@@ -298,3 +307,6 @@ TEST(LeanBonds, StiffnessSumIsThePlainSumInOrder) {
     EXPECT_TRUE(sameBits(sum, expected)) << (stored ? "stored" : "computed");
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(LeanBonds, StiffnessSum,
+                         ::testing::Values(std::make_tuple(5, 1), std::make_tuple(15, 3)));
