@@ -173,8 +173,7 @@ void plainStiffnessSum(const ModelState& s, const std::vector<int>& points, Cons
   };
   // Each sum is one point's, made in the same order whoever makes it: the set-up's threads take
   // runs of points (the estimate was 0.55 s of a 128^3 set-up on one thread).
-  const std::size_t numThreads = std::min<std::size_t>(
-      static_cast<std::size_t>(setUpThreads()), std::max<std::size_t>(points.size() / 1024, 1));
+  const auto numThreads = static_cast<std::size_t>(threadsFor(setUpThreads(), points.size()));
   runOnThreads(static_cast<int>(numThreads), [&](int t) {
     sumRange(points.size() * t / numThreads, points.size() * (t + 1) / numThreads);
   });

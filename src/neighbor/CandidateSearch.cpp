@@ -399,9 +399,7 @@ void countSphereOnce(const NeighborSearchInput& in, const std::vector<std::size_
   };
   // Threads take runs of candidates, each adding to counts of its own (a candidate adds to
   // slots of any run); the integer sums do not depend on how the candidates were split.
-  const std::size_t numThreads =
-      std::min<std::size_t>(static_cast<std::size_t>(std::max(in.threads, 1)),
-                            std::max<std::size_t>(in.numPoints / 1024, 1));
+  const auto numThreads = static_cast<std::size_t>(threadsFor(in.threads, in.numPoints));
   if (numThreads == 1) {
     countRange(0, in.numPoints, perSlot.data());
     return;

@@ -218,20 +218,11 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int thr
   // then joined in run order, which puts every length where one thread would have (at its first
   // pair), and each run's indices are translated. A table thus does not depend on the threads.
   const std::size_t numRows = rowPoint.size();
-  const int numThreads =
-      static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, numRows / 1024)));
-  std::vector<std::int64_t> runPair(static_cast<std::size_t>(numThreads) + 1, numPairs());
-  std::vector<std::size_t> runRow(static_cast<std::size_t>(numThreads) + 1, numRows);
-  runPair[0] = 0;
-  runRow[0] = 0;
-  for (int k = 1; k < numThreads; ++k) {
-    runRow[k] =
-        static_cast<std::size_t>(std::lower_bound(rowPairOffsets.begin(), rowPairOffsets.end() - 1,
-                                                  numPairs() / numThreads * k) -
-                                 rowPairOffsets.begin());
-    runRow[k] = std::max(runRow[k], runRow[k - 1]);
+  const int numThreads = threadsFor(threads, numRows);
+  const std::vector<std::size_t> runRow = runsOfRows(rowPairOffsets.data(), numRows, numThreads);
+  std::vector<std::int64_t> runPair(runRow.size(), 0);
+  for (std::size_t k = 0; k < runRow.size() && numRows > 0; ++k)
     runPair[k] = rowPairOffsets[runRow[k]];
-  }
   struct Run {
     std::vector<double> distinct;      // the run's lengths in the order it met them
     std::vector<std::uint8_t> high;    // per pair of the run, where an index needs it
@@ -341,12 +332,10 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {
   // bonds. A ghost row's pairs come from the owned rows before it in row order: each thread
   // counts its own (ghostCountOf), and writes them after those of the runs before its own, so
   // the pairs are where one thread would put them.
-  const int numThreads = std::max(1, std::min(threads, n / 1024));
-  std::vector<int> runStart(static_cast<std::size_t>(numThreads) + 1, n);
-  runStart[0] = 0;
-  for (int k = 1; k < numThreads; ++k)
-    runStart[k] = static_cast<int>(
-        std::lower_bound(offsets, offsets + n, offsets[n] / numThreads * k) - offsets);
+  const int numThreads = threadsFor(threads, static_cast<std::size_t>(n));
+  std::vector<int> runStart;
+  for (const std::size_t i : runsOfRows(offsets, static_cast<std::size_t>(n), numThreads))
+    runStart.push_back(static_cast<int>(i));
   std::vector<std::int64_t> ownedCount(static_cast<std::size_t>(n), 0);
   std::vector<std::vector<std::int64_t>> ghostCountOf(
       static_cast<std::size_t>(numThreads),
