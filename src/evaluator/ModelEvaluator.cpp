@@ -165,6 +165,10 @@ void ModelEvaluator::initialize() {
       for (auto& b : blocks_)
         if (b.damage) b.damage->initializeDamage(state_, b.points, bondDamage_);
     }
+    // Whoever asks for the damage by name (a checkpoint, a test) gets it current.
+    if (halfBondsBuilt_)
+      fields_.setBondFieldUpdate(compactDamage_ ? "Bond_Broken" : "Bond_Damage", this,
+                                 [this] { recordBreaks(); });
   }
 
   // Bonds may only join points whose models can read each other's per-point state. Every rank
@@ -237,6 +241,19 @@ void ModelEvaluator::storeBondLengthsIfRead() {
   state_.bondLength = length.data();
 }
 
+ModelEvaluator::~ModelEvaluator() {
+  fields_.clearBondFieldUpdate("Bond_Broken", this);
+  fields_.clearBondFieldUpdate("Bond_Damage", this);
+}
+
+void ModelEvaluator::recordBreaks() const {
+  if (!halfBondsBuilt_ || !halfBonds_.breaksPending()) return;
+  if (bondDamage_)
+    halfBonds_.recordBreaks(topology_, bondDamage_);
+  else if (bondBroken_)
+    halfBonds_.recordBreaks(topology_, bondBroken_);
+}
+
 void ModelEvaluator::bondDamageRewritten() {
   if (halfBondsBuilt_) halfBonds_.gatherDamage(topology_, bondDamage_, bondBroken_);
 }
@@ -294,6 +311,7 @@ void ModelEvaluator::setThermal(const double* temperatureChange) {
   // The half list's loops have no thermal strains: its memory goes back (the same on every
   // rank), and the full lists' loops may need |xi| per bond.
   if (expands && halfBondsBuilt_) {
+    recordBreaks();
     halfBonds_ = HalfBondList();
     halfBondsBuilt_ = false;
     storeBondLengthsIfRead();
@@ -406,6 +424,7 @@ bool ModelEvaluator::fusesDamage(const Block& b) const {
 }
 
 void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {
+  recordBreaks();
   if (state_.bondDamage)
     snapshot.bondDamage = fields_.bondFloat("Bond_Damage");
   else
@@ -422,14 +441,12 @@ void ModelEvaluator::saveDamage(DamageSnapshot& snapshot) const {
 }
 
 void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
-  if (state_.bondDamage) {
-    auto& damage = fields_.bondFloat("Bond_Damage");
-    std::copy(snapshot.bondDamage.begin(), snapshot.bondDamage.end(), damage.begin());
-  }
-  if (state_.bondBroken) {
-    auto& broken = fields_.bondByte("Bond_Broken");
-    std::copy(snapshot.bondBroken.begin(), snapshot.bondBroken.end(), broken.begin());
-  }
+  // Through the evaluator's pointers, not the fields by name: the half list's pending breaks
+  // need not be recorded into arrays about to be overwritten (gatherDamage drops them).
+  if (state_.bondDamage)
+    std::copy(snapshot.bondDamage.begin(), snapshot.bondDamage.end(), bondDamage_);
+  if (state_.bondBroken)
+    std::copy(snapshot.bondBroken.begin(), snapshot.bondBroken.end(), bondBroken_);
   bondDamageRewritten();
   // Blocks sharing a material instance saved the same state; restoring it twice is harmless.
   for (std::size_t k = 0; k < blocks_.size() && k < snapshot.materials.size(); ++k)
@@ -437,25 +454,27 @@ void ModelEvaluator::restoreDamage(const DamageSnapshot& snapshot) {
 }
 
 void ModelEvaluator::nodeDamage(double* damage) const {
+  if (halfBondsBuilt_ && (bondBroken_ || bondDamage_) && halfBonds_.pairDamage.empty()) {
+    // Every bond intact or broken, and the rows' broken pairs are the broken bonds
+    // (halfBondListApplies: a fused critical stretch breaks both entries of a bond together,
+    // and what rewrites the full lists is read into the rows again): counting those reads
+    // bytes per break, not a byte per bond, needs no pending break recorded (recordBreaks),
+    // and leaves the flags' untouched pages untouched (on some kernels a read takes a fresh
+    // page: core/ZeroedArray.hpp). Every bond is within both horizons here (no bondSides). The
+    // counts are whole numbers, the same doubles as the passes below (a sum of 0s and 1s).
+    std::fill(damage, damage + topology_.numOwned, 0.0);
+    halfBonds_.addBrokenBonds(topology_.numOwned, damage);
+    for (int i = 0; i < topology_.numOwned; ++i) {
+      const std::int64_t count = topology_.bondOffsets[i + 1] - topology_.bondOffsets[i];
+      damage[i] = count > 0 ? damage[i] / static_cast<double>(count) : 0.0;
+    }
+    return;
+  }
+  recordBreaks();
   if (bondBroken_ && !bondDamage_) {
     // Broken-bond flags: whole numbers, which the double sums below add exactly in any order,
     // so the counts are integers here and the pass vectorises (as a chain of double additions
     // it took 0.26 s per output at 128^3, a quarter of a step).
-    if (halfBondsBuilt_) {
-      // The rows' broken pairs are the broken bonds (halfBondListApplies: a fused critical
-      // stretch breaks both entries of a bond together, and what rewrites the flags is read
-      // into the rows again): counting those reads bytes per break, not a byte per bond, and
-      // leaves the flags' untouched pages untouched (on some kernels a read takes a fresh page:
-      // core/ZeroedArray.hpp). Every bond is within both horizons here (no bondSides). The
-      // counts are whole numbers, the same doubles as the pass below.
-      std::fill(damage, damage + topology_.numOwned, 0.0);
-      halfBonds_.addBrokenBonds(topology_.numOwned, damage);
-      for (int i = 0; i < topology_.numOwned; ++i) {
-        const std::int64_t count = topology_.bondOffsets[i + 1] - topology_.bondOffsets[i];
-        damage[i] = count > 0 ? damage[i] / static_cast<double>(count) : 0.0;
-      }
-      return;
-    }
     const unsigned char* sides = topology_.bondSides.empty() ? nullptr : topology_.bondSides.data();
     for (int i = 0; i < topology_.numOwned; ++i) {
       const std::int64_t b0 = topology_.bondOffsets[i], b1 = topology_.bondOffsets[i + 1];
@@ -488,6 +507,7 @@ void ModelEvaluator::nodeDamage(double* damage) const {
 }
 
 void ModelEvaluator::storedEnergyDensity(double* energyDensity) const {
+  recordBreaks();
   ModelState state = state_;
   for (const auto& b : blocks_) {
     state.bondLaw = b.damage ? b.damage->bondLaw() : BondLaw();

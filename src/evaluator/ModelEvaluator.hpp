@@ -17,6 +17,9 @@ class ModelEvaluator {
   // `influenceFunction`: "One", "Parabolic Decay", "Gaussian" or an expression in zeta, horizon.
   ModelEvaluator(const Topology& topology, FieldManager& fields, std::vector<Block>& blocks,
                  const std::string& influenceFunction, Timers& timers);
+  ~ModelEvaluator();
+  ModelEvaluator(const ModelEvaluator&) = delete;
+  ModelEvaluator& operator=(const ModelEvaluator&) = delete;
 
   // A planar run: points in z = 0, volumes include `thickness`. Call before initialize().
   void setPlanar(double thickness) {
@@ -80,7 +83,11 @@ class ModelEvaluator {
   // The time of the next evaluations (time-dependent damage laws read it).
   void setTime(double t) { state_.time = t; }
 
-  const ModelState& state() const { return state_; }
+  // The models' state, its bond damage current (recordBreaks).
+  const ModelState& state() const {
+    recordBreaks();
+    return state_;
+  }
   // Fraction of broken bonds per owned point (0 where no damage model or no bonds).
   void nodeDamage(double* damage) const;
   // The irreversible damage of the run (float bond damage or broken-bond flags, and what
@@ -121,7 +128,11 @@ class ModelEvaluator {
   bool partialVolumes_ = false;
   bool halfBondListAllowed_ = true;
   bool halfBondsBuilt_ = false;
-  HalfBondList halfBonds_;
+  // Mutable: its loops note breaks in its rows, and the full lists (bondDamage_, bondBroken_)
+  // are brought up to date by recordBreaks when something reads them, also through a const
+  // evaluator (an output): the damage the evaluator presents does not change.
+  mutable HalfBondList halfBonds_;
+  void recordBreaks() const;
   // Whether the scene allows the half list (see initialize()).
   bool halfBondListApplies() const;
   void storeBondLengthsIfRead();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace peridot {
 
@@ -89,6 +90,7 @@ std::vector<double>& FieldManager::bond(const std::string& name, double initial)
 }
 
 std::vector<float>& FieldManager::bondFloat(const std::string& name, float initial) {
+  updateBondField(name);
   auto it = floatBondFields_.find(name);
   if (it != floatBondFields_.end()) return it->second;
   return floatBondFields_
@@ -97,11 +99,22 @@ std::vector<float>& FieldManager::bondFloat(const std::string& name, float initi
 }
 
 ZeroedArray<unsigned char>& FieldManager::bondByte(const std::string& name) {
+  updateBondField(name);
   auto it = byteBondFields_.find(name);
   if (it != byteBondFields_.end()) return it->second;
   return byteBondFields_
       .emplace(name, ZeroedArray<unsigned char>(static_cast<std::size_t>(topology_.numBonds())))
       .first->second;
+}
+
+void FieldManager::setBondFieldUpdate(const std::string& name, const void* owner,
+                                      std::function<void()> update) {
+  bondFieldUpdates_[name] = BondFieldUpdate{owner, std::move(update)};
+}
+
+void FieldManager::clearBondFieldUpdate(const std::string& name, const void* owner) {
+  auto it = bondFieldUpdates_.find(name);
+  if (it != bondFieldUpdates_.end() && it->second.owner == owner) bondFieldUpdates_.erase(it);
 }
 
 std::vector<std::string> FieldManager::bondFieldNames() const {

@@ -4,6 +4,7 @@
 // aligned with the CSR bond lists (global values are computed by the output). Nothing is allocated
 // until a model, a boundary condition or an output asks for it by name.
 #include <Tpetra_Vector.hpp>
+#include <functional>
 #include <map>
 #include <memory>
 #include <new>
@@ -65,6 +66,14 @@ class FieldManager {
   // set (core/ZeroedArray.hpp).
   ZeroedArray<unsigned char>& bondByte(const std::string& name);
 
+  // A bond field that its writer brings up to date only when it is read (the bond damage of a
+  // run whose loops note breaks in the half bond list: ModelEvaluator): every request for it by
+  // name (bondFloat, bondByte) calls `update` first, so that no reader sees it stale. `owner`
+  // marks the registration: clearing it with another owner leaves it (an evaluator replaced by
+  // a new one on the same fields).
+  void setBondFieldUpdate(const std::string& name, const void* owner, std::function<void()> update);
+  void clearBondFieldUpdate(const std::string& name, const void* owner);
+
   // Names of the bond fields allocated so far (double, then float), e.g. for a checkpoint.
   std::vector<std::string> bondFieldNames() const;
   std::vector<std::string> floatBondFieldNames() const;
@@ -78,6 +87,15 @@ class FieldManager {
   std::map<std::string, std::vector<double>> bondFields_;
   std::map<std::string, std::vector<float>> floatBondFields_;
   std::map<std::string, ZeroedArray<unsigned char>> byteBondFields_;
+  struct BondFieldUpdate {
+    const void* owner;
+    std::function<void()> update;
+  };
+  std::map<std::string, BondFieldUpdate> bondFieldUpdates_;
+  void updateBondField(const std::string& name) const {
+    auto it = bondFieldUpdates_.find(name);
+    if (it != bondFieldUpdates_.end()) it->second.update();
+  }
   std::set<std::string> positionFields_, currentPositionFields_;
   bool deformedBox_ = false;
   double boxF_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};

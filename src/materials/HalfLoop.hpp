@@ -113,14 +113,11 @@ inline void scatterForceRow(int a, int n, const int* later, int m, const double*
   }
 }
 
-// The run's bond damage in the form it keeps (float or broken-bond flags), where the fused
-// critical stretch writes its breaks.
-template <typename DamageT>
-DamageT* breakableDamage(const ModelState& s) {
-  if constexpr (std::is_same_v<DamageT, float>)
-    return s.breakableBondDamage;
-  else
-    return s.breakableBondBroken;
+// Whether this pass breaks bonds (a fused critical stretch): the breaks go into the rows, and
+// the run's full lists (float damage or broken-bond flags) are brought up to date when read
+// (HalfBondList::recordBreaks).
+inline bool breaksBonds(const ModelState& s) {
+  return s.breakableBondDamage != nullptr || s.breakableBondBroken != nullptr;
 }
 
 // Where a loop reads a pair's |xi| (HalfBondList::storeLengths): computed from the reference
@@ -182,19 +179,6 @@ void withLengthSource(const HalfBondList& h, Loop&& loop) {
     loop(std::integral_constant<int, kPairLength>{});
   else
     loop(std::integral_constant<int, kComputedLength>{});
-}
-
-// Calls loop(std::integral_constant<int, LengthSource>, DamageT) for the run's storage: where
-// |xi| is read, and the run's damage form (float, or unsigned char flags).
-template <typename Loop>
-void withStorage(const ModelState& s, Loop&& loop) {
-  const bool flags = s.bondBroken != nullptr;
-  withLengthSource(*s.halfBonds, [&](auto source) {
-    if (flags)
-      loop(source, static_cast<unsigned char>(0));
-    else
-      loop(source, float{});
-  });
 }
 
 }  // namespace peridot::half

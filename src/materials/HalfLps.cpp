@@ -13,7 +13,7 @@ namespace {
 
 using half::mulAdd;
 
-template <bool kInfluence, bool kDamage, bool kBreak, int kLength, typename DamageT>
+template <bool kInfluence, bool kDamage, bool kBreak, int kLength>
 void dilatationLoop(const ModelState& s, const double* weightedVolume, double thetaFactor,
                     double* theta) {
   constexpr int kLanes = half::kLanes;
@@ -27,7 +27,6 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
   const half::PairLengths lengths = half::pairLengths(h);
   const double* pairInfluence = h.pairInfluence.data();
   float* pairDamage = h.pairDamage.data();
-  DamageT* full = half::breakableDamage<DamageT>(s);
   const double *y = s.y, *x = s.x, *volume = s.volume;
   const double criticalStretch = s.fusedCriticalStretch;
   // The sums sum omega (1 - d) |xi| e V_j first, scaled by c / m at the end.
@@ -79,12 +78,10 @@ void dilatationLoop(const ModelState& s, const double* weightedVolume, double th
     if (a < n) theta[a] += sum;
     if constexpr (kBreak) {
       if (anyBroke) {
-        h.breakPairs(t, r, broke);
-        if (h.breakBatchFull()) h.recordBreaks(t, full);
+        h.breakPairs(r, broke);
       }
     }
   }
-  if constexpr (kBreak) h.recordBreaks(t, full);
   // A point without bonds has no weighted volume and no dilatation.
   for (int i = 0; i < n; ++i)
     theta[i] = weightedVolume[i] > 0 ? thetaFactor * theta[i] / weightedVolume[i] : 0.0;
@@ -148,26 +145,24 @@ void forceLoop(const ModelState& s, const double* thetaBeta, const double* alpha
 void halfLpsDilatation(const ModelState& s, const double* weightedVolume, double thetaFactor,
                        double* dilatation) {
   const bool influence = !s.halfBonds->pairInfluence.empty();
-  half::withStorage(s, [&](auto source, auto damageType) {
+  half::withLengthSource(*s.halfBonds, [&](auto source) {
     constexpr int kLength = decltype(source)::value;
-    using DamageT = decltype(damageType);
-    const bool breaks = half::breakableDamage<DamageT>(s) != nullptr;
+    const bool breaks = half::breaksBonds(s);
     // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage).
     const bool partial = !s.halfBonds->pairDamage.empty();
     const auto run = [&](auto withInfluence) {
       constexpr bool kInfluence = decltype(withInfluence)::value;
       if (breaks && partial)
-        dilatationLoop<kInfluence, true, true, kLength, DamageT>(s, weightedVolume, thetaFactor,
-                                                                 dilatation);
+        dilatationLoop<kInfluence, true, true, kLength>(s, weightedVolume, thetaFactor, dilatation);
       else if (breaks)
-        dilatationLoop<kInfluence, false, true, kLength, DamageT>(s, weightedVolume, thetaFactor,
-                                                                  dilatation);
+        dilatationLoop<kInfluence, false, true, kLength>(s, weightedVolume, thetaFactor,
+                                                         dilatation);
       else if (partial)
-        dilatationLoop<kInfluence, true, false, kLength, float>(s, weightedVolume, thetaFactor,
-                                                                dilatation);
+        dilatationLoop<kInfluence, true, false, kLength>(s, weightedVolume, thetaFactor,
+                                                         dilatation);
       else
-        dilatationLoop<kInfluence, false, false, kLength, float>(s, weightedVolume, thetaFactor,
-                                                                 dilatation);
+        dilatationLoop<kInfluence, false, false, kLength>(s, weightedVolume, thetaFactor,
+                                                          dilatation);
     };
     if (influence)
       run(std::true_type{});

@@ -13,7 +13,7 @@ namespace {
 
 using half::mulAdd;
 
-template <bool kOverLength, bool kDamage, bool kBreak, int kLength, typename DamageT, bool kUniform>
+template <bool kOverLength, bool kDamage, bool kBreak, int kLength, bool kUniform>
 void halfLoop(const ModelState& s, const double* c) {
   constexpr int kLanes = half::kLanes;
   const Topology& t = *s.topology;
@@ -27,7 +27,6 @@ void halfLoop(const ModelState& s, const double* c) {
   // The pairs' copy of the damage, if any, is a float whatever the run keeps (a 1-byte type here
   // would make the vector pass 32 pairs wide).
   float* pairDamage = h.pairDamage.data();
-  DamageT* full = half::breakableDamage<DamageT>(s);  // written where a bond breaks
   const double* y = s.y;
   const double* x = s.x;
   const double* volume = s.volume;
@@ -87,30 +86,26 @@ void halfLoop(const ModelState& s, const double* c) {
     half::scatterForceRow(a, n, pairPoint + p0, m, volume, buffers, f);
     if constexpr (kBreak) {
       if (anyBroke) {
-        // Out of the loop from now on; in the full lists at the end of the pass.
-        h.breakPairs(t, r, broke);
-        if (h.breakBatchFull()) h.recordBreaks(t, full);
+        // Out of the loop from now on; in the full lists when they are read.
+        h.breakPairs(r, broke);
       }
     }
   }
-  if constexpr (kBreak) h.recordBreaks(t, full);
 }
 
-template <bool kOverLength, int kLength, typename DamageT, bool kUniform>
+template <bool kOverLength, int kLength, bool kUniform>
 void withDamage(const ModelState& s, const double* c) {
-  constexpr bool kFloat = std::is_same_v<DamageT, float>;
-  const bool breaks = kFloat ? s.breakableBondDamage != nullptr : s.breakableBondBroken != nullptr;
-  // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage); a
-  // loop that breaks none writes no damage (any DamageT will do).
+  const bool breaks = half::breaksBonds(s);
+  // Damage read per pair only where some bond is partly damaged (HalfBondList::pairDamage).
   const bool partial = !s.halfBonds->pairDamage.empty();
   if (breaks && partial)
-    halfLoop<kOverLength, true, true, kLength, DamageT, kUniform>(s, c);
+    halfLoop<kOverLength, true, true, kLength, kUniform>(s, c);
   else if (breaks)
-    halfLoop<kOverLength, false, true, kLength, DamageT, kUniform>(s, c);
+    halfLoop<kOverLength, false, true, kLength, kUniform>(s, c);
   else if (partial)
-    halfLoop<kOverLength, true, false, kLength, float, kUniform>(s, c);
+    halfLoop<kOverLength, true, false, kLength, kUniform>(s, c);
   else
-    halfLoop<kOverLength, false, false, kLength, float, kUniform>(s, c);
+    halfLoop<kOverLength, false, false, kLength, kUniform>(s, c);
 }
 
 // Whether every point the loop reads (owned and ghosts) has the same micromodulus: a pass over
@@ -125,18 +120,17 @@ bool uniform(const Topology& t, const double* c) {
 }  // namespace
 
 void halfPairForce(const ModelState& s, const double* c, bool normalized) {
-  half::withStorage(s, [&](auto source, auto damageType) {
+  half::withLengthSource(*s.halfBonds, [&](auto source) {
     constexpr int kLength = decltype(source)::value;
-    using DamageT = decltype(damageType);
     const bool same = uniform(*s.topology, c);
     if (normalized && same)
-      withDamage<true, kLength, DamageT, true>(s, c);
+      withDamage<true, kLength, true>(s, c);
     else if (normalized)
-      withDamage<true, kLength, DamageT, false>(s, c);
+      withDamage<true, kLength, false>(s, c);
     else if (same)
-      withDamage<false, kLength, DamageT, true>(s, c);
+      withDamage<false, kLength, true>(s, c);
     else
-      withDamage<false, kLength, DamageT, false>(s, c);
+      withDamage<false, kLength, false>(s, c);
   });
 }
 

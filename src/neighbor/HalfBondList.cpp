@@ -47,6 +47,7 @@ std::size_t HalfBondList::bytes() const {
 
 void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
                                 const unsigned char* bondBroken) {
+  pending_ = false;
   // A pair's damage as the full lists hold it (0 in a run without damage).
   const auto damageOf = [&](std::size_t r, std::int64_t p) {
     const std::int64_t e = fullEntry(t, r, p);
@@ -94,25 +95,18 @@ void HalfBondList::gatherDamage(const Topology& t, const float* bondDamage,
   }
 }
 
-void HalfBondList::breakPairs(const Topology& t, std::size_t r, const int* broke) {
+void HalfBondList::breakPairs(std::size_t r, const int* broke) {
   const std::int64_t p0 = rowPairOffsets[r];
   const int m = rowIntact[r];
   int first = 0;
   while (first < m && !broke[first]) ++first;
   if (first == m) return;
-  // Noted before they move: this rank's full-list entry, and both ends where both are owned.
-  int intact = first;
-  const int a = rowPoint[r];
-  for (int k = first; k < m; ++k) {
-    if (!broke[k]) {
-      ++intact;
-      continue;
-    }
-    const int b = pairPoint[p0 + k];
-    brokenEntries_.push_back(fullEntry(t, r, p0 + k));
-    if (a < t.numOwned && b < t.numOwned)
-      brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 | static_cast<std::uint32_t>(a));
+  if (!pending_) {
+    rowRecorded_.assign(rowIntact.begin(), rowIntact.end());
+    pending_ = true;
   }
+  int intact = first;
+  for (int k = first; k < m; ++k) intact += broke[k] ? 0 : 1;
   // Each array from the first broken pair on: the intact ones forward, in order, then the
   // broken ones (stashed in a buffer of the row's length).
   if (stash_.size() < static_cast<std::size_t>(m)) stash_.resize(static_cast<std::size_t>(m));

@@ -18,9 +18,10 @@
 // from the reference positions, the same bits), the influence omega where it is not 1; their
 // damage is which of its row's pairs are intact (rowIntact), with a copy of its value only where
 // some bond is partly damaged. The full (two-sided) lists stay what the rest of the code reads
-// (outputs, checkpoints, tangents): a break is written to both (recordBreaks), and the rows are
-// read again from the full lists whenever something else rewrites them (gatherDamage: a
-// restored trial, a restart).
+// (outputs, checkpoints, tangents), but the loops write their breaks into the rows only: the
+// full lists are brought up to date when something reads them (recordBreaks), which a run that
+// reads only point damage (addBrokenBonds) never does. The rows are read again from the full
+// lists whenever something else rewrites them (gatherDamage: a restored trial, a restart).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -98,35 +99,46 @@ struct HalfBondList {
   void storeLengths(const double* x, std::size_t tableLimit = kLengthTableLimit, int threads = 1);
   bool storesLengths() const { return !pairLength.empty() || !pairLengthIndex.empty(); }
   // Copies the run's bond damage (float or flags; null: none) into the pairs, every row in its
-  // order with its broken pairs last (rowIntact).
+  // order with its broken pairs last (rowIntact). The full lists are the damage then: breaks
+  // pending in the rows are dropped (for a caller that rewrote the full lists).
   void gatherDamage(const Topology& t, const float* bondDamage, const unsigned char* bondBroken);
-  // After a pass broke some of row r's intact pairs (broke[k] != 0 for its k-th pair): notes them
-  // for recordBreaks, then moves them behind the row's intact ones (which keep their order), in
-  // every per-pair array.
-  void breakPairs(const Topology& t, std::size_t r, const int* broke);
+  // After a pass broke some of row r's intact pairs (broke[k] != 0 for its k-th pair): moves
+  // them behind the row's intact ones (which keep their order), in every per-pair array. They
+  // then sit just after the intact ones, before the pairs broken earlier: the full lists'
+  // pending breaks of a row are its pairs from rowIntact up to the count recordBreaks last saw.
+  void breakPairs(std::size_t r, const int* broke);
   // Adds, per owned point, 1 for each of its broken bonds to brokenBonds (numOwned entries),
   // reading only the rows' broken pairs. Valid where the rows' partition is the whole damage
   // (pairDamage empty: every bond intact or broken).
   void addBrokenBonds(int numOwned, double* brokenBonds) const;
   // Copies the per-bond influence (full lists) into the pairs.
   void gatherInfluence(const Topology& t, const double* influence);
-  // Marks the bonds that breakPairs noted broken in the full lists (this rank's entry of each,
-  // and the other end's when that is owned too), at the end of a pass or of a batch. Together:
-  // finding the other end's entry reads a full-list row that the loop does not (cache misses per
-  // break), and in one tight loop those rows can be fetched ahead of their searches (sorting
-  // the searches by row first cost more than it saved).
+  // Whether some pair broke since the full lists were last brought up to date.
+  bool breaksPending() const { return pending_; }
+  // Brings the full lists' damage `full` (the run's Bond_Damage or Bond_Broken) up to date: marks
+  // broken every bond broken in the rows since the last call (this rank's entry of each, and
+  // the other end's when that is owned too). The same entries, whenever it runs: the loops
+  // never read the full lists. Batched: finding the other end's entry reads a full-list row
+  // (cache misses per break), and in one tight loop over a batch those rows can be fetched
+  // ahead of their searches (sorting the searches by row first cost more than it saved). Done
+  // inside the force loop at every pass, this was 6% of a 64^3 run that breaks half its bonds.
   template <typename DamageT>
   void recordBreaks(const Topology& t, DamageT* full);
-  // Whether a pass should record its breaks now rather than at its end, to keep the notes to a
-  // batch: noted for a whole pass, they raised the peak of 20 steps of a 128^3 run by 165 MB.
-  // Nothing in the pass reads the full lists, so when they are written changes no result.
+  // The breaks are recorded in batches of this many, which bounds the notes' memory.
   static constexpr std::size_t kBreakBatch = std::size_t{1} << 16;
-  bool breakBatchFull() const { return brokenEntries_.size() >= kBreakBatch; }
 
  private:
-  std::vector<double> stash_;                 // breakPairs's buffer
-  std::vector<std::int64_t> brokenEntries_;   // noted breaks: this rank's entries (fullEntry)
-  std::vector<std::uint64_t> brokenMirrors_;  // and (later end, earlier end) where both owned
+  std::vector<double> stash_;  // breakPairs's buffer
+  // Per row, its intact count when the full lists were last brought up to date; only while
+  // breaks are pending (copied from rowIntact at the first break after an update).
+  std::vector<int> rowRecorded_;
+  bool pending_ = false;
+  // A batch of recordBreaks: this rank's entries (fullEntry), and (later end, earlier end)
+  // where both are owned.
+  std::vector<std::int64_t> brokenEntries_;
+  std::vector<std::uint64_t> brokenMirrors_;
+  template <typename DamageT>
+  void writeBreaks(const Topology& t, DamageT* full);
 };
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
@@ -142,6 +154,25 @@ std::int64_t mirrorBond(const Topology& topology, int j, int i);
 
 template <typename DamageT>
 void HalfBondList::recordBreaks(const Topology& t, DamageT* full) {
+  if (!pending_) return;
+  pending_ = false;
+  for (std::size_t r = 0; r < rowPoint.size(); ++r) {
+    const int a = rowPoint[r];
+    const std::int64_t p0 = rowPairOffsets[r];
+    for (std::int64_t p = p0 + rowIntact[r]; p < p0 + rowRecorded_[r]; ++p) {
+      const int b = pairPoint[p];
+      brokenEntries_.push_back(fullEntry(t, r, p));
+      if (a < t.numOwned && b < t.numOwned)
+        brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 |
+                                 static_cast<std::uint32_t>(a));
+      if (brokenEntries_.size() >= kBreakBatch) writeBreaks(t, full);
+    }
+  }
+  writeBreaks(t, full);
+}
+
+template <typename DamageT>
+void HalfBondList::writeBreaks(const Topology& t, DamageT* full) {
   for (const std::int64_t e : brokenEntries_) full[e] = DamageT(1);
   // The other end's row and damage entries, asked for this many searches ahead: the searches
   // then find them in cache (4% less force time at 64^3, where a third of the bonds break). The

@@ -147,7 +147,7 @@ TEST(HalfBondList, SlotsPastTheFirstByteWhereRowsAreLong) {
   for (std::size_t r = 0; r < h.rowPoint.size(); ++r) {
     broke.assign(static_cast<std::size_t>(h.rowIntact[r]), 0);
     for (std::size_t k = 0; k < broke.size(); k += 3) broke[k] = 1;
-    h.breakPairs(t, r, broke.data());
+    h.breakPairs(r, broke.data());
     for (std::int64_t p = h.rowPairOffsets[r]; p < h.rowPairOffsets[r + 1]; ++p)
       ASSERT_EQ(t.neighbors[h.fullEntry(t, r, p)],
                 h.rowPoint[r] < t.numOwned ? h.pairPoint[p] : h.rowPoint[r]);
