@@ -133,13 +133,18 @@ struct HalfBondList {
   // breaks are pending (copied from rowIntact at the first break after an update).
   std::vector<int> rowRecorded_;
   bool pending_ = false;
-  // A batch of recordBreaks: this rank's entries (fullEntry), and (later end, earlier end)
-  // where both are owned.
-  std::vector<std::int64_t> brokenEntries_;
-  std::vector<std::uint64_t> brokenMirrors_;
-  template <typename DamageT>
-  void writeBreaks(const Topology& t, DamageT* full);
 };
+
+namespace halfbreaks {
+// A batch of recordBreaks: this rank's entries of the broken bonds (fullEntry), and (later end,
+// earlier end) where both ends are owned. Written into `full` and cleared.
+struct Batch {
+  std::vector<std::int64_t> entries;
+  std::vector<std::uint64_t> mirrors;
+};
+template <typename DamageT>
+void write(const Topology& t, Batch& batch, DamageT* full);
+}  // namespace halfbreaks
 
 // Builds the rows and pairs (not pairLength nor the damage copies), or returns false (and leaves
 // `list` empty) where it cannot be used: a topology without a curve box, periodic images, a full
@@ -156,45 +161,47 @@ template <typename DamageT>
 void HalfBondList::recordBreaks(const Topology& t, DamageT* full) {
   if (!pending_) return;
   pending_ = false;
+  halfbreaks::Batch batch;
   for (std::size_t r = 0; r < rowPoint.size(); ++r) {
     const int a = rowPoint[r];
     const std::int64_t p0 = rowPairOffsets[r];
     for (std::int64_t p = p0 + rowIntact[r]; p < p0 + rowRecorded_[r]; ++p) {
       const int b = pairPoint[p];
-      brokenEntries_.push_back(fullEntry(t, r, p));
+      batch.entries.push_back(fullEntry(t, r, p));
       if (a < t.numOwned && b < t.numOwned)
-        brokenMirrors_.push_back(static_cast<std::uint64_t>(b) << 32 |
-                                 static_cast<std::uint32_t>(a));
-      if (brokenEntries_.size() >= kBreakBatch) writeBreaks(t, full);
+        batch.mirrors.push_back(static_cast<std::uint64_t>(b) << 32 |
+                                static_cast<std::uint32_t>(a));
+      if (batch.entries.size() >= kBreakBatch) halfbreaks::write(t, batch, full);
     }
   }
-  writeBreaks(t, full);
+  halfbreaks::write(t, batch, full);
 }
 
 template <typename DamageT>
-void HalfBondList::writeBreaks(const Topology& t, DamageT* full) {
-  for (const std::int64_t e : brokenEntries_) full[e] = DamageT(1);
+void halfbreaks::write(const Topology& t, Batch& batch, DamageT* full) {
+  for (const std::int64_t e : batch.entries) full[e] = DamageT(1);
   // The other end's row and damage entries, asked for this many searches ahead: the searches
   // then find them in cache (4% less force time at 64^3, where a third of the bonds break). The
   // first 128 entries (a row at delta = 3 dx has ~120), without reading where the row ends.
   constexpr std::size_t kAhead = 64;
   constexpr std::int64_t kEntries = 128, kLine = 64;
-  const std::size_t count = brokenMirrors_.size();
+  const std::vector<std::uint64_t>& mirrors = batch.mirrors;
+  const std::size_t count = mirrors.size();
   const auto last = static_cast<std::int64_t>(t.neighbors.size()) - 1;
   for (std::size_t k = 0; k < count; ++k) {
     if (k + kAhead < count) {
-      const std::int64_t b0 = t.bondOffsets[brokenMirrors_[k + kAhead] >> 32];
+      const std::int64_t b0 = t.bondOffsets[mirrors[k + kAhead] >> 32];
       for (std::int64_t b = 0; b < kEntries; b += kLine / std::int64_t{sizeof(int)})
         __builtin_prefetch(&t.neighbors[std::min(b0 + b, last)]);
       for (std::int64_t b = 0; b < kEntries; b += kLine / std::int64_t{sizeof(DamageT)})
         __builtin_prefetch(full + std::min(b0 + b, last), 1);
     }
-    const std::uint64_t key = brokenMirrors_[k];
+    const std::uint64_t key = mirrors[k];
     const std::int64_t mirror =
         mirrorBond(t, static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu));
     if (mirror >= 0) full[mirror] = DamageT(1);
   }
-  brokenEntries_.clear();
-  brokenMirrors_.clear();
+  batch.entries.clear();
+  batch.mirrors.clear();
 }
 }  // namespace peridot
