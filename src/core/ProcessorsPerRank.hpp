@@ -3,6 +3,8 @@
 // spare beyond one per rank (a single rank on a multi-core machine). Decided once, at start
 // (app/Application.cpp); the set-up's helpers use the spare ones (the neighbour search's
 // threads, core/BackgroundFaults.hpp). 1 until decided.
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -59,6 +61,34 @@ void runOnThreads(int n, Work&& work) {
   for (auto& h : helpers) h.join();
   for (const auto& f : failure)
     if (f) std::rethrow_exception(f);
+}
+
+// Calls work(t, first, last) for chunks [first, last) of [0, items), `chunk` items each (the
+// last may be shorter), on n threads as runOnThreads does. Chunks go in order to whichever
+// thread asks first, so a thread slowed down (by a processor it shares with the page-fault
+// helper, or by rows that cost more than others) takes fewer of them instead of finishing last.
+// Only for work whose result does not depend on which thread did which chunk.
+template <class Work>
+void runChunksOnThreads(int n, std::size_t items, std::size_t chunk, Work&& work) {
+  chunk = std::max<std::size_t>(chunk, 1);
+  std::atomic<std::size_t> nextChunk{0};
+  runOnThreads(n, [&](int t) {
+    for (;;) {
+      const std::size_t first = nextChunk.fetch_add(chunk, std::memory_order_relaxed);
+      if (first >= items) return;
+      work(t, first, std::min(items, first + chunk));
+    }
+  });
+}
+
+// Calls work(k) for k = 0 .. tasks-1 on n threads, each task going to whichever thread asks
+// first (as runChunksOnThreads).
+template <class Work>
+void runTasksOnThreads(int n, int tasks, Work&& work) {
+  runChunksOnThreads(n, static_cast<std::size_t>(std::max(tasks, 0)), 1,
+                     [&](int, std::size_t first, std::size_t last) {
+                       for (std::size_t k = first; k < last; ++k) work(static_cast<int>(k));
+                     });
 }
 
 }  // namespace peridot

@@ -244,23 +244,16 @@ void forEachRunBlocked(const NeighborSearchInput& in, const QueryGrid& g, double
   };
   // A block's queries are in no other block, so blocks scanned by different threads write
   // different lists, each still by its candidates in increasing index: the lists do not depend
-  // on the number of threads. Each thread takes a run of blocks with about an equal share of
-  // the block members (the scans).
+  // on the number of threads, nor on which thread scanned which block. The threads take runs
+  // of a few blocks as they come free (about 16 runs a thread).
   const int numThreads = static_cast<int>(std::min<std::size_t>(
       static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(numBlocks / 4, 1)));
   if (numThreads == 1) {
     scanBlocks(0, numBlocks);
     return;
   }
-  std::vector<std::size_t> cut(numThreads + 1, numBlocks);
-  cut[0] = 0;
-  for (int t = 1; t < numThreads; ++t) {
-    const std::int64_t share = start[numBlocks] * t / numThreads;
-    cut[t] = static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), share) -
-                                      start.begin() - 1);
-    cut[t] = std::max(cut[t], cut[t - 1]);
-  }
-  runOnThreads(numThreads, [&](int t) { scanBlocks(cut[t], cut[t + 1]); });
+  runChunksOnThreads(numThreads, numBlocks, numBlocks / (16 * numThreads),
+                     [&](int, std::size_t first, std::size_t last) { scanBlocks(first, last); });
 }
 
 // The scan of one pass. Per run of slots [s0, s0 + n) of one row and candidate j, with
@@ -405,11 +398,12 @@ void countSphereOnce(const NeighborSearchInput& in, const std::vector<std::size_
     return;
   }
   std::vector<std::vector<int>> partial(numThreads - 1, std::vector<int>(perSlot.size(), 0));
-  runOnThreads(static_cast<int>(numThreads), [&](int t) {
-    const std::size_t first = in.numPoints * t / numThreads;
-    const std::size_t last = in.numPoints * (t + 1) / numThreads;
-    countRange(first, last, t == 0 ? perSlot.data() : partial[t - 1].data());
-  });
+  // About 64 chunks a thread: small enough that the threads finish together.
+  runChunksOnThreads(static_cast<int>(numThreads), in.numPoints,
+                     std::max<std::size_t>(in.numPoints / (64 * numThreads), 1024),
+                     [&](int t, std::size_t first, std::size_t last) {
+                       countRange(first, last, t == 0 ? perSlot.data() : partial[t - 1].data());
+                     });
   for (const auto& p : partial)
     for (std::size_t s = 0; s < perSlot.size(); ++s) perSlot[s] += p[s];
 }

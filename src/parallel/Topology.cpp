@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/Error.hpp"
+#include "core/ProcessorsPerRank.hpp"
 #include "neighbor/NeighborSearch.hpp"
 #include "neighbor/PartialVolume.hpp"
 #include "parallel/Partition.hpp"
@@ -378,7 +379,16 @@ Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
     }
   }
   localOfOwned = std::vector<int>();
-  for (int& c : t.neighbors) c = localOf[static_cast<std::size_t>(c)];
+  {
+    // One gather per bond (a quarter of a second at 128^3 on one thread).
+    int* c = t.neighbors.data();
+    const std::size_t numBonds = t.neighbors.size();
+    runChunksOnThreads(threadsFor(opt.searchThreads, numBonds), numBonds, std::size_t{1} << 20,
+                       [&](int, std::size_t first, std::size_t last) {
+                         for (std::size_t b = first; b < last; ++b)
+                           c[b] = localOf[static_cast<std::size_t>(c[b])];
+                       });
+  }
   localOf = std::vector<int>();
 
   // Point sets as owned local indices.
