@@ -207,13 +207,15 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int thr
   pairLengthIndexHigh = std::vector<std::uint8_t>();
   lengthTable = std::vector<double>();
   pairLengthIndex.assign(entries, 0);
-  // Threads take runs of rows with about equal shares of the pairs. Each finds its run's
-  // distinct lengths (in the order it meets them) and writes its own indices; the tables are
-  // then joined in run order, which puts every length where one thread would have (at its first
-  // pair), and each run's indices are translated. A table thus does not depend on the threads.
+  // Runs of rows with about equal shares of the pairs, a few per thread, which the threads take
+  // as they come free. Each run's distinct lengths are found (in the order met) and its own
+  // indices written; the tables are then joined in run order, which puts every length where one
+  // thread would have (at its first pair), and each run's indices are translated. A table thus
+  // depends neither on the threads nor on the runs.
   const std::size_t numRows = rowPoint.size();
   const int numThreads = threadsFor(threads, numRows);
-  const std::vector<std::size_t> runRow = runsOfRows(rowPairOffsets.data(), numRows, numThreads);
+  const int numRuns = numThreads == 1 ? 1 : 8 * numThreads;
+  const std::vector<std::size_t> runRow = runsOfRows(rowPairOffsets.data(), numRows, numRuns);
   std::vector<std::int64_t> runPair(runRow.size(), 0);
   for (std::size_t k = 0; k < runRow.size() && numRows > 0; ++k)
     runPair[k] = rowPairOffsets[runRow[k]];
@@ -223,8 +225,8 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int thr
     std::vector<std::int32_t> global;  // per run index: the joined table's
     bool fits = true;
   };
-  std::vector<Run> runs(static_cast<std::size_t>(numThreads));
-  runOnThreads(numThreads, [&](int t) {
+  std::vector<Run> runs(static_cast<std::size_t>(numRuns));
+  runTasksOnThreads(numThreads, numRuns, [&](int t) {
     // Locals only in the loop: the runs' records share cache lines, and a store to a byte
     // array may alias anything the loop would otherwise reload.
     DistinctValues table(tableLimit);
@@ -266,7 +268,7 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int thr
   if (fits) {
     lengthTable = std::move(joined.values);
     if (lengthTable.size() > 256) pairLengthIndexHigh.assign(entries, 0);
-    runOnThreads(numThreads, [&](int t) {
+    runTasksOnThreads(numThreads, numRuns, [&](int t) {
       const Run& run = runs[t];
       bool same = run.high.empty();
       for (std::size_t k = 0; k < run.global.size() && same; ++k)
@@ -287,7 +289,7 @@ void HalfBondList::storeLengths(const double* x, std::size_t tableLimit, int thr
   runs = std::vector<Run>();
   pairLengthIndex = std::vector<std::uint8_t>();
   pairLength.assign(entries, 1.0);
-  runOnThreads(numThreads, [&](int t) {
+  runTasksOnThreads(numThreads, numRuns, [&](int t) {
     for (std::size_t r = runRow[t]; r < runRow[t + 1]; ++r)
       for (std::int64_t p = rowPairOffsets[r]; p < rowPairOffsets[r + 1]; ++p)
         pairLength[p] = referenceBondLength(x, rowPoint[r], pairPoint[p]);
@@ -322,19 +324,26 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {
   // anything -- made the next bond reload the row's bounds and the lists' addresses.)
   const std::int64_t* offsets = t.bondOffsets.data();
   const int* neighbors = t.neighbors.data();
-  // Threads (the rank's spare processors) take runs of rows with about equal shares of the
-  // bonds. A ghost row's pairs come from the owned rows before it in row order: each thread
-  // counts its own (ghostCountOf), and writes them after those of the runs before its own, so
-  // the pairs are where one thread would put them.
+  // Runs of rows with about equal shares of the bonds, which the threads (the rank's spare
+  // processors) take as they come free. A ghost row's pairs come from the owned rows before it
+  // in row order: each run counts its own (ghostCountOf), and writes them after those of the
+  // runs before it, so the pairs are where one thread would put them. Up to 8 runs a thread, as
+  // long as their ghost counts take no more than the owned rows' counts.
   const int numThreads = threadsFor(threads, static_cast<std::size_t>(n));
+  const std::int64_t ghostCounts = std::int64_t{t.numGhosts} * numThreads;
+  const int runsPerThread = numThreads == 1
+                                ? 1
+                                : static_cast<int>(std::clamp<std::int64_t>(
+                                      n / std::max<std::int64_t>(ghostCounts, 1), 1, 8));
+  const int numRuns = numThreads * runsPerThread;
   std::vector<int> runStart;
-  for (const std::size_t i : runsOfRows(offsets, static_cast<std::size_t>(n), numThreads))
+  for (const std::size_t i : runsOfRows(offsets, static_cast<std::size_t>(n), numRuns))
     runStart.push_back(static_cast<int>(i));
   std::vector<std::int64_t> ownedCount(static_cast<std::size_t>(n), 0);
   std::vector<std::vector<std::int64_t>> ghostCountOf(
-      static_cast<std::size_t>(numThreads),
+      static_cast<std::size_t>(numRuns),
       std::vector<std::int64_t>(static_cast<std::size_t>(t.numGhosts), 0));
-  runOnThreads(numThreads, [&](int k) {
+  runTasksOnThreads(numThreads, numRuns, [&](int k) {
     std::int64_t* ghostCount = ghostCountOf[k].data();
     for (int i = runStart[k]; i < runStart[k + 1]; ++i) {
       std::int64_t count = 0;
@@ -350,7 +359,7 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {
     }
   });
   std::vector<std::int64_t> ghostCount(static_cast<std::size_t>(t.numGhosts), 0);
-  for (int k = 0; k < numThreads; ++k)
+  for (int k = 0; k < numRuns; ++k)
     for (int g = 0; g < t.numGhosts; ++g) ghostCount[g] += ghostCountOf[k][g];
   // Rows: every owned point (local order is curve order), and the ghosts with pairs merged in.
   std::vector<int> ghosts;
@@ -398,13 +407,13 @@ bool buildHalfBondList(const Topology& t, HalfBondList& list, int threads) {
   // runs' counts).
   for (int g = 0; g < t.numGhosts; ++g) {
     std::int64_t next = ghostRowStart[g];
-    for (int k = 0; k < numThreads; ++k) {
+    for (int k = 0; k < numRuns; ++k) {
       const std::int64_t count = ghostCountOf[k][g];
       ghostCountOf[k][g] = next;
       next += count;
     }
   }
-  runOnThreads(numThreads, [&](int k) {
+  runTasksOnThreads(numThreads, numRuns, [&](int k) {
     std::int64_t* ghostNext = ghostCountOf[k].data();
     for (int i = runStart[k]; i < runStart[k + 1]; ++i) {
       std::int64_t next = ownedRowStart[i];
