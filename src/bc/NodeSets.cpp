@@ -25,31 +25,39 @@ bool allIntegers(const std::string& s) {
   return any;
 }
 
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
 // The ids read from `in`, line by line, that `keep` accepts (all ids are range-checked): a
-// rank keeps only its own, however long the list.
+// rank keeps only its own, however long the list. The words of a line are read in place (a
+// string stream per line cost 0.1 s for a 2 * 10^6-point file).
 template <class Keep>
 std::vector<long long> readIds(std::istream& in, const std::string& path, const std::string& source,
                                long long numPoints, Keep keep) {
   std::vector<long long> ids;
   std::string line;
   while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) continue;
-    if (line[first] == '#' || line[first] == '/' || line[first] == '*') continue;
-    std::istringstream words(line);
-    std::string w;
-    while (words >> w) {
-      char* end = nullptr;
-      const long long id = std::strtoll(w.c_str(), &end, 10);
-      if (*end != '\0') {
-        throw InputError(path, source + ": \"" + w + "\" is not a point id (a positive integer)");
+    const char* c = line.c_str();
+    const char* const end = c + line.size();
+    while (c < end && isSpace(*c)) ++c;
+    if (c == end || *c == '#' || *c == '/' || *c == '*') continue;
+    while (c < end) {
+      const char* wordEnd = c;
+      while (wordEnd < end && !isSpace(*wordEnd)) ++wordEnd;
+      char* parsed = nullptr;
+      const long long id = std::strtoll(c, &parsed, 10);
+      if (parsed != wordEnd || parsed == c) {
+        throw InputError(path, source + ": \"" + std::string(c, wordEnd) +
+                                   "\" is not a point id (a positive integer)");
       }
       if (id < 1 || id > numPoints) {
-        throw InputError(path, source + ": point id " + w + " is out of range (ids are 1-based, " +
-                                   "the discretization has " + std::to_string(numPoints) +
-                                   " points)");
+        throw InputError(path, source + ": point id " + std::string(c, wordEnd) +
+                                   " is out of range (ids are 1-based, the discretization has " +
+                                   std::to_string(numPoints) + " points)");
       }
       if (keep(id - 1)) ids.push_back(id - 1);
+      for (c = wordEnd; c < end && isSpace(*c);) ++c;
     }
   }
   return ids;
@@ -115,12 +123,23 @@ std::map<std::string, std::vector<long long>> collectNodeSets(
 }
 
 std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds, const IdIndex& owned) {
+  // Marked, then collected in order: linear, where a sort of the indices took 0.1 s for a set
+  // of 2 * 10^6 points. (The ids are distinct, so are the indices.)
   std::vector<int> out;
   for (long long g : setGlobalIds) {
     const int local = owned.find(g);
     if (local >= 0) out.push_back(local);
   }
-  std::sort(out.begin(), out.end());
+  if (out.size() < 64) {
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  const int largest = *std::max_element(out.begin(), out.end());
+  std::vector<unsigned char> in(static_cast<std::size_t>(largest) + 1, 0);
+  for (int local : out) in[static_cast<std::size_t>(local)] = 1;
+  out.clear();
+  for (int local = 0; local <= largest; ++local)
+    if (in[static_cast<std::size_t>(local)]) out.push_back(local);
   return out;
 }
 

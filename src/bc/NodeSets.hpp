@@ -17,8 +17,8 @@ namespace peridot {
 std::map<std::string, std::vector<long long>> collectNodeSets(
     const Topology& topology, const std::vector<NodeSetSpec>& specs);
 
-// Owned local indices of a set's points, sorted, given the owned points indexed by global id
-// (built once for all the sets).
+// Owned local indices of a set's points, sorted, each once, given the owned points indexed by
+// global id (built once for all the sets).
 std::vector<int> ownedPoints(const std::vector<long long>& setGlobalIds, const IdIndex& owned);
 
 }  // namespace peridot
