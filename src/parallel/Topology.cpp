@@ -255,6 +255,10 @@ Topology buildTopology(PointCloud&& cloud, std::vector<double>&& horizon,
                                      cloud.thickness, comm);
   NeighborSearchInput searchIn = searchInput(cand, facts, opt);
   if (bondCount.empty()) countNeighbors(searchIn, cand.queries, bondCount);
+  // The lists' storage is taken now, untouched, so that the page-fault helper
+  // (core/BackgroundFaults.hpp) faults it in while the curve sort below keeps one processor.
+  t.neighbors.reserve(static_cast<std::size_t>(
+      std::accumulate(bondCount.begin(), bondCount.end(), std::int64_t{0})));
   const PointBatch& owned = cand.owned;
   const PointBatch& halo = cand.halo.points;
   const std::size_t numOwned = owned.size();
