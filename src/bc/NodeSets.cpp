@@ -1,6 +1,7 @@
 #include "bc/NodeSets.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -25,9 +26,8 @@ bool allIntegers(const std::string& s) {
   return any;
 }
 
-bool isSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
-}
+// The separators of `>>` (the program keeps the classic locale).
+bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 
 // The ids read from `in`, line by line, that `keep` accepts (all ids are range-checked): a
 // rank keeps only its own, however long the list. The words of a line are read in place (a
